@@ -1,0 +1,25 @@
+# Entry points for a fresh Debian 12 machine. Each target installs the Debian packages it needs.
+BUILD := build/release
+JOBS ?= $(shell nproc)
+
+.PHONY: deps build demo test bench clean
+
+deps:
+	@scripts/install-deps.sh
+
+build: deps
+	@cmake --preset release >/dev/null
+	@cmake --build $(BUILD) -j $(JOBS)
+
+demo: build
+	@scripts/run-demo.sh $(BUILD)/apps/ancfnet/ancfnet
+
+test: build
+	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+bench: build
+	@scripts/install-deps.sh --bench
+	@bench/run_scenarios.sh $(BUILD)
+
+clean:
+	rm -rf build

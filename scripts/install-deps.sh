@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages ancfnet needs, only those missing. Idempotent and quiet when
+# everything is already there. Usage: scripts/install-deps.sh [--bench] [--plot]
+set -euo pipefail
+
+packages=(build-essential cmake libeigen3-dev libyaml-cpp-dev libcli11-dev libfmt-dev
+          nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libsuitesparse-dev
+          libomp-dev python3 python3-numpy python3-matplotlib)
+for arg in "$@"; do
+  case "$arg" in
+    --bench) packages+=(hyperfine time) ;;
+    *) echo "install-deps.sh: unknown option '$arg' (expected --bench)" >&2; exit 2 ;;
+  esac
+done
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+sudo_cmd=()
+if [ "$(id -u)" -ne 0 ]; then sudo_cmd=(sudo); fi
+echo "install-deps.sh: installing ${missing[*]}" >&2
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq >/dev/null
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

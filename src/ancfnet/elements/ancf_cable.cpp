@@ -1,0 +1,197 @@
+#include "ancfnet/elements/ancf_cable.hpp"
+
+#include <cmath>
+
+#include "ancfnet/common/quadrature.hpp"
+#include "ancfnet/elements/hermite_shape.hpp"
+
+namespace ancfnet {
+namespace {
+
+using Matrix34d = Eigen::Matrix<double, 3, 4>;
+using Matrix12x3d = Eigen::Matrix<double, 12, 3>;
+
+Matrix3d Skew(const Vector3d& v) {
+  Matrix3d m;
+  m << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
+  return m;
+}
+
+// K += scale · (u vᵀ ⊗ X): the 12×12 matrix whose 3×3 block (j, l) is u_j v_l X. Every term of
+// the cable's Jacobians has this Kronecker form because S = [S1 I, …, S4 I].
+void AddKronecker(const Vector4d& u, const Vector4d& v, const Matrix3d& x, double scale,
+                  Matrix12d& k) {
+  for (int j = 0; j < 4; ++j)
+    for (int l = 0; l < 4; ++l) k.block<3, 3>(3 * j, 3 * l) += (scale * u[j] * v[l]) * x;
+}
+
+// K += scale · (u vᵀ ⊗ I).
+void AddKroneckerIdentity(const Vector4d& u, const Vector4d& v, double scale, Matrix12d& k) {
+  for (int j = 0; j < 4; ++j)
+    for (int l = 0; l < 4; ++l) k.block<3, 3>(3 * j, 3 * l).diagonal().array() += scale * u[j] * v[l];
+}
+
+// 12×3 matrix whose 3×3 block j is u_j X + v_j Y.
+Matrix12x3d StackBlocks(const Vector4d& u, const Matrix3d& x, const Vector4d& v,
+                        const Matrix3d& y) {
+  Matrix12x3d m;
+  for (int j = 0; j < 4; ++j) m.block<3, 3>(3 * j, 0) = u[j] * x + v[j] * y;
+  return m;
+}
+
+// Axial term at one Gauss point of weight w·L: N ∂ε/∂e with ∂ε/∂e = Sₓᵀ r'.
+// Gerstmayr & Shabana (2006), eq. 9 and 14; tangent from differentiating once more.
+void AddAxialTerms(const CableElementParameters& p, const Matrix34d& e, const Matrix34d& e_dot,
+                   const Vector4d& ds, double weight, const CableForceOutputs& out) {
+  const Vector3d a = e * ds;
+  const Vector3d a_dot = e_dot * ds;
+  const double strain = 0.5 * (a.squaredNorm() - 1.0);
+  if (p.tension_only && strain <= 0.0) return;  // a slack rope carries no axial force
+  const double strain_rate = a.dot(a_dot);
+  const double ea = p.axial_stiffness;
+  const double viscous_n = ea * p.axial_damping_time * strain_rate;
+  const double n = ea * strain + viscous_n;
+  const Vector12d de = DistributeForce(ds, a);
+  if (out.force) *out.force += (weight * n) * de;
+  if (out.viscous_force) *out.viscous_force += (weight * viscous_n) * de;
+  if (out.stiffness) {
+    out.stiffness->noalias() += (weight * ea) * de * de.transpose();
+    AddKroneckerIdentity(ds, ds, weight * n, *out.stiffness);
+    if (p.axial_damping_time > 0.0)
+      out.stiffness->noalias() +=
+          (weight * ea * p.axial_damping_time) * de * DistributeForce(ds, a_dot).transpose();
+  }
+  if (out.damping && p.axial_damping_time > 0.0)
+    out.damping->noalias() += (weight * ea * p.axial_damping_time) * de * de.transpose();
+}
+
+// Bending term at one Gauss point: EI (k + τ k̇)ᵀ ∂k/∂e with the curvature vector
+// k = h c, c = r' × r'', h = g^{-3/2}, g = r'·r' (|k| = κ, Gerstmayr & Shabana 2006, eq. 11).
+// Derivatives in docs/theory.md, "Bending: curvature vector".
+void AddBendingTerms(const CableElementParameters& p, const Matrix34d& e, const Matrix34d& e_dot,
+                     const Vector4d& ds, const Vector4d& dds, double weight,
+                     const CableForceOutputs& out) {
+  const Vector3d a = e * ds;
+  const Vector3d b = e * dds;
+  const double g = a.squaredNorm();
+  const double h = std::pow(g, -1.5);
+  const Vector3d c = a.cross(b);
+  const Vector3d k = h * c;
+  const Vector12d da = DistributeForce(ds, a);          // ∂g/∂e / 2
+  const Vector12d grad_h = (-3.0 * h / g) * da;        // ∂h/∂e
+  const Matrix12x3d dc_t = StackBlocks(ds, Skew(b), dds, -Skew(a));  // (∂c/∂e)ᵀ
+  const Matrix12x3d jk_t = h * dc_t + grad_h * c.transpose();         // (∂k/∂e)ᵀ
+
+  const double ei = p.bending_stiffness;
+  const double tau = p.bending_damping_time;
+  const bool damped = tau > 0.0;
+  const Vector12d e_dot_vec = Eigen::Map<const Vector12d>(e_dot.data());
+  const Vector3d k_dot = damped ? Vector3d(jk_t.transpose() * e_dot_vec) : Vector3d::Zero();
+  const Vector3d viscous_m = (ei * tau) * k_dot;
+  const Vector3d m = ei * k + viscous_m;  // bending "moment" vector conjugate to k
+
+  if (out.force) out.force->noalias() += weight * (jk_t * m);
+  if (out.viscous_force && damped) out.viscous_force->noalias() += weight * (jk_t * viscous_m);
+  if (out.damping && damped) out.damping->noalias() += (weight * ei * tau) * jk_t * jk_t.transpose();
+  if (!out.stiffness) return;
+
+  Matrix12d& kt = *out.stiffness;
+  kt.noalias() += (weight * ei) * jk_t * jk_t.transpose();
+  // Σ_i m_i ∂²k_i/∂e² = h Σ m_i ∂²c_i + (∂cᵀm) ∇hᵀ + ∇h (∂cᵀm)ᵀ + (m·c) ∂²h.
+  const Matrix3d m_skew = Skew(m);
+  AddKronecker(dds, ds, m_skew, weight * h, kt);
+  AddKronecker(ds, dds, m_skew, -weight * h, kt);
+  const Vector12d dc_m = dc_t * m;
+  kt.noalias() += weight * (dc_m * grad_h.transpose() + grad_h * dc_m.transpose());
+  const double mc = weight * m.dot(c);
+  const double g52 = h / g;  // g^{-5/2}
+  kt.noalias() += (mc * 15.0 * g52 / g) * da * da.transpose();
+  AddKroneckerIdentity(ds, ds, -3.0 * mc * g52, kt);
+  if (!damped) return;
+  // Damping force EI τ Jkᵀ k̇ depends on e also through k̇ = Jk ė: add Jkᵀ ∂k̇/∂e, where column i
+  // of (∂k̇/∂e)ᵀ is (∂²k_i/∂e²) ė = h ∂²c_i ė + ∇c_i ḣ + ∇h ċ_i + c_i ∂²h ė.
+  const Vector3d a_dot = e_dot * ds;
+  const Vector3d b_dot = e_dot * dds;
+  const double a_adot = a.dot(a_dot);
+  const double h_dot = -3.0 * g52 * a_adot;
+  const Vector3d c_dot = a_dot.cross(b) + a.cross(b_dot);
+  const Vector12d hess_h_edot =
+      (15.0 * g52 / g * a_adot) * da - 3.0 * g52 * DistributeForce(ds, a_dot);
+  const Matrix12x3d hess_c_edot = StackBlocks(dds, -Skew(a_dot), ds, Skew(b_dot));
+  const Matrix12x3d dk_dot_t =
+      h * hess_c_edot + h_dot * dc_t + grad_h * c_dot.transpose() + hess_h_edot * c.transpose();
+  kt.noalias() += (weight * ei * tau) * jk_t * dk_dot_t.transpose();
+}
+
+}  // namespace
+
+void CalcCableInternalForce(const CableElementParameters& p, const Vector12d& e,
+                            const Vector12d& e_dot, const CableForceOutputs& out) {
+  if (out.force) out.force->setZero();
+  if (out.viscous_force) out.viscous_force->setZero();
+  if (out.stiffness) out.stiffness->setZero();
+  if (out.damping) out.damping->setZero();
+  const Eigen::Map<const Matrix34d> e_mat(e.data());
+  const Eigen::Map<const Matrix34d> e_dot_mat(e_dot.data());
+
+  const GaussRule& axial = GetGaussRule(p.axial_gauss_points);
+  for (int i = 0; i < axial.size; ++i) {
+    const HermiteShape shape = CalcHermiteShape(axial.points[i], p.length);
+    AddAxialTerms(p, e_mat, e_dot_mat, shape.ds, axial.weights[i] * p.length, out);
+  }
+  if (p.bending_stiffness == 0.0) return;
+  const GaussRule& bending = GetGaussRule(p.bending_gauss_points);
+  for (int i = 0; i < bending.size; ++i) {
+    const HermiteShape shape = CalcHermiteShape(bending.points[i], p.length);
+    AddBendingTerms(p, e_mat, e_dot_mat, shape.ds, shape.dds, bending.weights[i] * p.length, out);
+  }
+}
+
+CableStrain CalcCableStrain(const CableElementParameters& p, const Vector12d& e, double xi) {
+  const HermiteShape shape = CalcHermiteShape(xi, p.length);
+  const Eigen::Map<const Matrix34d> e_mat(e.data());
+  const Vector3d a = e_mat * shape.ds;
+  const Vector3d b = e_mat * shape.dds;
+  CableStrain strain;
+  strain.axial = 0.5 * (a.squaredNorm() - 1.0);
+  strain.curvature = a.cross(b).norm() / std::pow(a.squaredNorm(), 1.5);
+  return strain;
+}
+
+double CalcCableStrainEnergy(const CableElementParameters& p, const Vector12d& e) {
+  double energy = 0.0;
+  const GaussRule& axial = GetGaussRule(p.axial_gauss_points);
+  for (int i = 0; i < axial.size; ++i) {
+    double eps = CalcCableStrain(p, e, axial.points[i]).axial;
+    if (p.tension_only) eps = std::max(eps, 0.0);
+    energy += 0.5 * axial.weights[i] * p.length * p.axial_stiffness * eps * eps;
+  }
+  const GaussRule& bending = GetGaussRule(p.bending_gauss_points);
+  for (int i = 0; i < bending.size; ++i) {
+    const double kappa = CalcCableStrain(p, e, bending.points[i]).curvature;
+    energy += 0.5 * bending.weights[i] * p.length * p.bending_stiffness * kappa * kappa;
+  }
+  return energy;
+}
+
+Matrix12d CalcCableMassMatrix(const CableElementParameters& p) {
+  const GaussRule& rule = GetGaussRule(4);  // S_i S_j is of degree 6: exact with 4 points
+  Matrix4d m = Matrix4d::Zero();
+  for (int i = 0; i < rule.size; ++i) {
+    const HermiteShape shape = CalcHermiteShape(rule.points[i], p.length);
+    m.noalias() += (rule.weights[i] * p.length * p.mass_per_length) * shape.s * shape.s.transpose();
+  }
+  Matrix12d mass = Matrix12d::Zero();
+  for (int j = 0; j < 4; ++j)
+    for (int l = 0; l < 4; ++l) mass.block<3, 3>(3 * j, 3 * l).diagonal().setConstant(m(j, l));
+  return mass;
+}
+
+Vector12d CalcCableDistributedForce(const CableElementParameters& p, const Vector3d& w) {
+  const double L = p.length;
+  Vector4d integral_s;  // ∫₀ᴸ S dx, exact
+  integral_s << L / 2.0, L * L / 12.0, L / 2.0, -L * L / 12.0;
+  return DistributeForce(integral_s, w);
+}
+
+}  // namespace ancfnet

@@ -1,0 +1,59 @@
+#include "ancfnet/model/model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fmt/format.h>
+
+#include "ancfnet/common/error.hpp"
+#include "ancfnet/elements/hermite_shape.hpp"
+
+namespace ancfnet {
+
+double Model::total_mass() const {
+  double mass = 0.0;
+  for (const Cable& cable : cables_) mass += cable.properties.mass_per_length * cable.length;
+  return mass;
+}
+
+Index Model::FindCable(const std::string& name) const {
+  for (std::size_t i = 0; i < cables_.size(); ++i)
+    if (cables_[i].name == name) return static_cast<Index>(i);
+  std::string names;
+  for (const Cable& cable : cables_) names += (names.empty() ? "" : ", ") + cable.name;
+  throw InputError(fmt::format("no cable named '{}' (cables: {})", name, names));
+}
+
+MaterialPoint Model::LocateCablePoint(Index cable_index, double s) const {
+  if (!(s >= 0.0 && s <= 1.0))
+    throw InputError(fmt::format("cable fraction s must be in [0, 1] (got {})", s));
+  const Cable& cable = cables_[cable_index];
+  const double position = s * static_cast<double>(cable.num_elements);
+  const Index local = std::min<Index>(static_cast<Index>(std::floor(position)),
+                                      cable.num_elements - 1);
+  return {cable.first_element + local, position - static_cast<double>(local)};
+}
+
+Index Model::LocateCableNode(Index cable_index, double s) const {
+  const Cable& cable = cables_[cable_index];
+  const double position = s * static_cast<double>(cable.num_elements);
+  const double nearest = std::round(position);
+  if (!(s >= 0.0 && s <= 1.0) || std::abs(position - nearest) > 1e-9 * cable.num_elements)
+    throw InputError(fmt::format(
+        "s = {} on cable '{}' is not at a node (nodes are at multiples of 1/{})", s, cable.name,
+        cable.num_elements));
+  return cable.first_node + static_cast<Index>(nearest);
+}
+
+Vector12d Model::Gather(const CableElement& element, const VectorXd& x) const {
+  Vector12d e;
+  for (int i = 0; i < kCableElementDofs; ++i) e[i] = x[element.dofs[i]];
+  return e;
+}
+
+Vector3d Model::Interpolate(const MaterialPoint& point, const VectorXd& x) const {
+  const CableElement& element = elements_[point.element];
+  const HermiteShape shape = CalcHermiteShape(point.xi, element.parameters.length);
+  return InterpolatePosition(Gather(element, x), shape.s);
+}
+
+}  // namespace ancfnet

@@ -1,0 +1,103 @@
+#pragma once
+/// @file The Model: what is simulated (topology, parameters, coordinate numbering, loads, boundary
+/// conditions, initial state). Built once by ModelBuilder, read-only afterwards.
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "ancfnet/common/types.hpp"
+#include "ancfnet/elements/ancf_cable.hpp"
+#include "ancfnet/model/material.hpp"
+
+namespace ancfnet {
+
+/// A cable: a chain of ANCF elements between consecutive nodes.
+struct Cable {
+  std::string name;
+  Index first_node = 0;     ///< nodes first_node … first_node + num_elements
+  Index first_element = 0;  ///< elements first_element … first_element + num_elements − 1
+  Index num_elements = 0;
+  double length = 0.0;  ///< reference length (m)
+  CableProperties properties;
+};
+
+/// One ANCF cable element and where its 12 coordinates live in the global vector.
+struct CableElement {
+  Index cable = 0;
+  std::array<Index, kCableElementDofs> dofs{};
+  CableElementParameters parameters;
+};
+
+/// A material point of a cable: element and local coordinate ξ ∈ [0, 1].
+struct MaterialPoint {
+  Index element = 0;
+  double xi = 0.0;
+};
+
+/// Force fixed in space (N) at a material point; scaled by the load factor in static analyses.
+struct PointForce {
+  MaterialPoint point;
+  Vector3d force = Vector3d::Zero();
+};
+
+/// Moment (N m) at a cable node, acting on the slope coordinates r' through
+/// Q_r' = (M × r') / |r'|² (docs/theory.md, "Point moment"). The cable carries no torsion, so the
+/// component of M along the cable does no work.
+struct PointMoment {
+  Index node = 0;
+  Vector3d moment = Vector3d::Zero();
+};
+
+/// Force per unit reference length (N/m) on a whole cable, fixed in space.
+struct DistributedLoad {
+  Index cable = 0;
+  Vector3d force_per_length = Vector3d::Zero();
+};
+
+/// The system description. Coordinates are numbered node by node, six per cable node
+/// (r, r'); a coordinate is either free (an unknown) or fixed at its initial value.
+class Model {
+ public:
+  Index num_dofs() const { return static_cast<Index>(initial_positions_.size()); }
+  Index num_nodes() const { return num_dofs() / kCableNodeDofs; }
+  const std::vector<Cable>& cables() const { return cables_; }
+  const std::vector<CableElement>& elements() const { return elements_; }
+  const std::vector<PointForce>& point_forces() const { return point_forces_; }
+  const std::vector<PointMoment>& point_moments() const { return point_moments_; }
+  const std::vector<DistributedLoad>& distributed_loads() const { return distributed_loads_; }
+  const Vector3d& gravity() const { return gravity_; }
+  /// Per coordinate: true when fixed (eliminated from the unknowns).
+  const std::vector<bool>& fixed() const { return fixed_; }
+  const VectorXd& initial_positions() const { return initial_positions_; }
+  const VectorXd& initial_velocities() const { return initial_velocities_; }
+  /// Total mass of the cables (kg).
+  double total_mass() const;
+
+  /// First global coordinate of a node.
+  static Index NodeDof(Index node) { return kCableNodeDofs * node; }
+  /// Index of the cable with this name; throws InputError (listing the names) when there is none.
+  Index FindCable(const std::string& name) const;
+  /// Material point at fraction s ∈ [0, 1] of a cable's reference length.
+  MaterialPoint LocateCablePoint(Index cable, double s) const;
+  /// Node at fraction s of a cable; throws InputError when s is not at a node.
+  Index LocateCableNode(Index cable, double s) const;
+  /// Nodal coordinates of an element gathered from a global vector.
+  Vector12d Gather(const CableElement& element, const VectorXd& x) const;
+  /// Position (or, given velocities, velocity) of a material point.
+  Vector3d Interpolate(const MaterialPoint& point, const VectorXd& x) const;
+
+ private:
+  friend class ModelBuilder;
+  std::vector<Cable> cables_;
+  std::vector<CableElement> elements_;
+  std::vector<PointForce> point_forces_;
+  std::vector<PointMoment> point_moments_;
+  std::vector<DistributedLoad> distributed_loads_;
+  Vector3d gravity_ = Vector3d::Zero();
+  std::vector<bool> fixed_;
+  VectorXd initial_positions_;
+  VectorXd initial_velocities_;
+};
+
+}  // namespace ancfnet

@@ -1,0 +1,62 @@
+#pragma once
+/// @file ModelBuilder: the public C++ API that assembles a Model. The YAML loader and (later) the
+/// Python bindings go through it, so every check on the input lives here once.
+
+#include <array>
+#include <string>
+
+#include "ancfnet/model/model.hpp"
+
+namespace ancfnet {
+
+/// A straight cable from `start` to `end` divided into equal elements, stress-free as built.
+struct CableSpec {
+  std::string name;
+  Vector3d start = Vector3d::Zero();  ///< m
+  Vector3d end = Vector3d::Zero();    ///< m
+  int num_elements = 1;               ///< ≥ 1
+  CableProperties properties;
+};
+
+/// A point of a named cable at fraction s ∈ [0, 1] of its reference length.
+struct CablePointRef {
+  std::string cable;
+  double s = 0.0;
+};
+
+/// Which coordinates of a cable node to fix: x, y, z of r, then of r'.
+using CoordinateMask = std::array<bool, kCableNodeDofs>;
+
+/// Builds a Model step by step. Every method validates its arguments and throws InputError with
+/// a one-line message naming the offending value (callers add the file and line).
+class ModelBuilder {
+ public:
+  /// Gravitational acceleration (m/s²) acting on every cable.
+  void SetGravity(const Vector3d& gravity);
+  /// Adds a cable; returns its index. Names must be unique and non-empty.
+  Index AddCable(const CableSpec& spec);
+  /// Fixes position and slope of the node at `at` (which must be a node).
+  void AddClamp(const CablePointRef& at);
+  /// Fixes the position of the node at `at`; the slope stays free.
+  void AddPin(const CablePointRef& at);
+  /// Fixes the chosen coordinates of the node at `at`.
+  void FixCoordinates(const CablePointRef& at, const CoordinateMask& mask);
+  /// Force fixed in space (N) at any material point.
+  void AddPointForce(const CablePointRef& at, const Vector3d& force);
+  /// Moment (N m) at a node (a cable end, typically).
+  void AddPointMoment(const CablePointRef& at, const Vector3d& moment);
+  /// Load per unit length (N/m) on a whole cable.
+  void AddDistributedLoad(const std::string& cable, const Vector3d& force_per_length);
+  /// Initial velocity of every point of a cable: v (m/s) plus ω × (r − center), ω in rad/s.
+  void SetInitialVelocity(const std::string& cable, const Vector3d& velocity,
+                          const Vector3d& angular_velocity = Vector3d::Zero(),
+                          const Vector3d& center = Vector3d::Zero());
+  /// The finished model. Throws InputError when it has no cable.
+  Model Build() const;
+
+ private:
+  Index LocateNode(const CablePointRef& at) const;
+  Model model_;
+};
+
+}  // namespace ancfnet

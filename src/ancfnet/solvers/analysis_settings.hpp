@@ -1,0 +1,49 @@
+#pragma once
+/// @file Options of the static and dynamic analyses: one description serves the YAML loader, the
+/// CLI and (later) Python. Defaults are the documented defaults of docs/scene-format.md.
+
+namespace ancfnet {
+
+/// Convergence of Newton iterations: converged when the weighted RMS norm of the last increment,
+/// √(mean_i (Δx_i / (atol + rtol |x_i|))²), is ≤ 1 (the error norm of Hairer & Wanner 1996, II.4).
+struct NewtonSettings {
+  int max_iterations = 12;
+  double relative_tolerance = 1e-6;  ///< rtol (dimensionless)
+  double absolute_tolerance = 1e-8;  ///< atol (in the unit of the coordinates, m or 1)
+};
+
+/// When the iteration matrix is recomputed and factorised.
+enum class JacobianUpdate {
+  kEveryIteration,  ///< full Newton
+  kEveryStep,       ///< once per time step, kept through that step's iterations
+  kAdaptive,        ///< kept across steps; refreshed when convergence slows or fails
+};
+
+enum class IntegratorType { kGeneralizedAlpha, kExplicitVerlet };
+
+struct DynamicSettings {
+  IntegratorType integrator = IntegratorType::kGeneralizedAlpha;
+  double spectral_radius = 0.8;  ///< ρ∞ ∈ [0, 1] of generalised-α
+  double time_step = 1e-3;       ///< nominal step h (s), > 0
+  double end_time = 1.0;         ///< s, > 0
+  double min_time_step = 0.0;    ///< smallest step after cuts (s); 0: time_step / 2¹⁰
+  JacobianUpdate jacobian_update = JacobianUpdate::kAdaptive;
+  NewtonSettings newton;
+};
+
+struct StaticSettings {
+  int load_steps = 1;      ///< equal load increments to reach the full load, ≥ 1
+  int max_step_cuts = 12;  ///< halvings of a load increment before giving up
+  bool line_search = true;
+  NewtonSettings newton{.max_iterations = 40};
+};
+
+enum class AnalysisType { kStatic, kDynamic };
+
+struct AnalysisSettings {
+  AnalysisType type = AnalysisType::kStatic;
+  StaticSettings statics;
+  DynamicSettings dynamics;
+};
+
+}  // namespace ancfnet

@@ -1,0 +1,15 @@
+#include "ancfnet/state/state.hpp"
+
+#include "ancfnet/model/model.hpp"
+
+namespace ancfnet {
+
+State MakeInitialState(const Model& model) {
+  State state;
+  state.q = model.initial_positions();
+  state.v = model.initial_velocities();
+  state.a = VectorXd::Zero(model.num_dofs());
+  return state;
+}
+
+}  // namespace ancfnet
