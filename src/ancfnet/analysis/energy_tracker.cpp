@@ -1,0 +1,47 @@
+#include "ancfnet/analysis/energy_tracker.hpp"
+
+namespace ancfnet {
+
+double CalcKineticEnergy(const Model& model, const Workspace& ws, const VectorXd& v) {
+  double energy = 0.0;
+  for (std::size_t e = 0; e < model.elements().size(); ++e) {
+    const Vector12d ve = model.Gather(model.elements()[e], v);
+    energy += 0.5 * ve.dot(ws.element_mass[e] * ve);
+  }
+  return energy;
+}
+
+double CalcStrainEnergy(const Model& model, const VectorXd& q) {
+  double energy = 0.0;
+  for (const CableElement& element : model.elements())
+    energy += CalcCableStrainEnergy(element.parameters, model.Gather(element, q));
+  return energy;
+}
+
+EnergyTracker::EnergyTracker(const Model& model, const Workspace& ws, const VectorXd& q)
+    : q_(q), applied_(ws.applied_force), viscous_(ws.viscous_force) {
+  account_.strain = CalcStrainEnergy(model, q);
+  account_.gravity = -ws.gravity_force.dot(q);
+}
+
+void EnergyTracker::Advance(const Model& model, const Workspace& ws, const VectorXd& q,
+                            const VectorXd& v, double load_factor) {
+  // Trapezoidal rule in q: ∫ Q · dq ≈ ½ (Q_n + Q_{n+1}) · (q_{n+1} − q_n).
+  double work = 0.0;
+  double dissipated = 0.0;
+  for (Index i = 0; i < q.size(); ++i) {
+    const double dq = q[i] - q_[i];
+    work += 0.5 * (applied_[i] + ws.applied_force[i]) * dq;
+    dissipated += 0.5 * (viscous_[i] + ws.viscous_force[i]) * dq;
+  }
+  account_.work += work;
+  account_.dissipated += dissipated;
+  account_.kinetic = CalcKineticEnergy(model, ws, v);
+  account_.strain = CalcStrainEnergy(model, q);
+  account_.gravity = -load_factor * ws.gravity_force.dot(q);
+  q_ = q;
+  applied_ = ws.applied_force;
+  viscous_ = ws.viscous_force;
+}
+
+}  // namespace ancfnet

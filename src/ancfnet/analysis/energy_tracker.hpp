@@ -1,0 +1,35 @@
+#pragma once
+/// @file Energy accounting along a run: kinetic, strain and gravitational energy from the state,
+/// work of applied loads and dissipation accumulated step by step.
+
+#include "ancfnet/analysis/energy.hpp"
+#include "ancfnet/model/model.hpp"
+#include "ancfnet/state/workspace.hpp"
+
+namespace ancfnet {
+
+/// Kinetic energy ½ Σ v_eᵀ M_e v_e (J).
+double CalcKineticEnergy(const Model& model, const Workspace& ws, const VectorXd& v);
+/// Strain energy Σ U_e(q) (J).
+double CalcStrainEnergy(const Model& model, const VectorXd& q);
+
+/// Accumulates the work of the applied loads W = ∫ Q_applied · dq and the energy dissipated by
+/// material damping D = ∫ Q_visc · dq with the trapezoidal rule over each step, and evaluates
+/// the state energies. Gravity enters through its potential −λ Q_gᵀ q (Q_g constant).
+class EnergyTracker {
+ public:
+  /// Starts at `q` with the forces currently in `ws` (applied_force, viscous_force).
+  EnergyTracker(const Model& model, const Workspace& ws, const VectorXd& q);
+  /// Advances to the accepted state (q, v) with the forces in `ws` evaluated there.
+  void Advance(const Model& model, const Workspace& ws, const VectorXd& q, const VectorXd& v,
+               double load_factor);
+  const EnergyAccount& account() const { return account_; }
+
+ private:
+  EnergyAccount account_;
+  VectorXd q_;
+  VectorXd applied_;
+  VectorXd viscous_;
+};
+
+}  // namespace ancfnet

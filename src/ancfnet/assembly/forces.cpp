@@ -1,0 +1,104 @@
+#include "ancfnet/assembly/forces.hpp"
+
+#include "ancfnet/elements/hermite_shape.hpp"
+
+namespace ancfnet {
+namespace {
+
+// Below this many elements the parallel region costs more than it saves.
+constexpr std::size_t kParallelElements = 64;
+
+void ScatterAdd(const CableElement& element, const Vector12d& f, VectorXd* global) {
+  for (int i = 0; i < kCableElementDofs; ++i) (*global)[element.dofs[i]] += f[i];
+}
+
+// Slope generalised force of a moment M at a node with slope a = r':
+// Q = (M × a) / |a|², from δW = M · (a × δa) / |a|² (docs/theory.md, "Point moment").
+Vector3d MomentSlopeForce(const Vector3d& moment, const Vector3d& a) {
+  return moment.cross(a) / a.squaredNorm();
+}
+
+// ∂Q/∂a of MomentSlopeForce.
+Matrix3d MomentSlopeJacobian(const Vector3d& moment, const Vector3d& a) {
+  const double g = a.squaredNorm();
+  Matrix3d skew_m;
+  skew_m << 0.0, -moment.z(), moment.y(), moment.z(), 0.0, -moment.x(), -moment.y(), moment.x(),
+      0.0;
+  return skew_m / g - 2.0 / (g * g) * moment.cross(a) * a.transpose();
+}
+
+}  // namespace
+
+void CalcInternalForces(const Model& model, const VectorXd& q, const VectorXd& v, Workspace& ws) {
+  const auto& elements = model.elements();
+  const Index n = static_cast<Index>(elements.size());
+#pragma omp parallel for schedule(static) if (elements.size() >= kParallelElements)
+  for (Index e = 0; e < n; ++e) {
+    CalcCableInternalForce(elements[e].parameters, model.Gather(elements[e], q),
+                           model.Gather(elements[e], v),
+                           {.force = &ws.element_force[e],
+                            .viscous_force = &ws.element_viscous_force[e]});
+  }
+  ws.internal_force.setZero();
+  ws.viscous_force.setZero();
+  for (Index e = 0; e < n; ++e) {
+    ScatterAdd(elements[e], ws.element_force[e], &ws.internal_force);
+    ScatterAdd(elements[e], ws.element_viscous_force[e], &ws.viscous_force);
+  }
+}
+
+void CalcExternalForces(const Model& model, const VectorXd& q, double load_factor, Workspace& ws) {
+  ws.applied_force = ws.distributed_force;
+  for (const PointForce& load : model.point_forces()) {
+    const CableElement& element = model.elements()[load.point.element];
+    const HermiteShape shape = CalcHermiteShape(load.point.xi, element.parameters.length);
+    ScatterAdd(element, DistributeForce(shape.s, load.force), &ws.applied_force);
+  }
+  for (const PointMoment& load : model.point_moments()) {
+    const Index slope = Model::NodeDof(load.node) + 3;
+    ws.applied_force.segment<3>(slope) += MomentSlopeForce(load.moment, q.segment<3>(slope));
+  }
+  ws.applied_force *= load_factor;
+  ws.external_force = ws.applied_force + load_factor * ws.gravity_force;
+}
+
+void AssembleIterationMatrix(const Model& model, const VectorXd& q, const VectorXd& v,
+                             const IterationWeights& weights, double load_factor, Workspace& ws,
+                             SystemMatrix* matrix) {
+  const auto& elements = model.elements();
+  const Index n = static_cast<Index>(elements.size());
+  const bool need_damping = weights.damping != 0.0;
+#pragma omp parallel for schedule(static) if (elements.size() >= kParallelElements)
+  for (Index e = 0; e < n; ++e) {
+    CalcCableInternalForce(elements[e].parameters, model.Gather(elements[e], q),
+                           model.Gather(elements[e], v),
+                           {.force = &ws.element_force[e],
+                            .viscous_force = &ws.element_viscous_force[e],
+                            .stiffness = &ws.element_stiffness[e],
+                            .damping = need_damping ? &ws.element_damping[e] : nullptr});
+  }
+  matrix->SetZero();
+  ws.internal_force.setZero();
+  ws.viscous_force.setZero();
+  for (Index e = 0; e < n; ++e) {
+    ScatterAdd(elements[e], ws.element_force[e], &ws.internal_force);
+    ScatterAdd(elements[e], ws.element_viscous_force[e], &ws.viscous_force);
+    matrix->AddElementBlock(e, ws.element_stiffness[e], weights.stiffness);
+    if (weights.mass != 0.0) matrix->AddElementBlock(e, ws.element_mass[e], weights.mass);
+    if (need_damping) matrix->AddElementBlock(e, ws.element_damping[e], weights.damping);
+  }
+  // Point moments depend on the slope: −c_K λ ∂Q_ext/∂q.
+  for (const PointMoment& load : model.point_moments()) {
+    const Index slope = Model::NodeDof(load.node) + 3;
+    matrix->AddBlock3(slope, slope, MomentSlopeJacobian(load.moment, q.segment<3>(slope)),
+                      -weights.stiffness * load_factor);
+  }
+}
+
+void AssembleMassMatrix(const Model& model, const Workspace& ws, SystemMatrix* matrix) {
+  matrix->SetZero();
+  for (std::size_t e = 0; e < model.elements().size(); ++e)
+    matrix->AddElementBlock(static_cast<Index>(e), ws.element_mass[e]);
+}
+
+}  // namespace ancfnet

@@ -1,0 +1,36 @@
+#pragma once
+/// @file Assembly of the generalised forces of the equations of motion
+///   M q̈ + Q_int(q, q̇) = Q_ext(q, t)
+/// and of the iteration matrix c_M M + c_C ∂Q/∂q̇ + c_K ∂Q/∂q, Q = Q_int − Q_ext.
+
+#include "ancfnet/assembly/system_matrix.hpp"
+#include "ancfnet/model/model.hpp"
+#include "ancfnet/state/workspace.hpp"
+
+namespace ancfnet {
+
+/// Fills ws.internal_force and ws.viscous_force (all coordinates). Elements in parallel.
+void CalcInternalForces(const Model& model, const VectorXd& q, const VectorXd& v, Workspace& ws);
+
+/// Fills ws.applied_force (point forces, point moments, distributed loads) and ws.external_force
+/// = applied + gravity, all scaled by the load factor λ (1 in dynamics).
+void CalcExternalForces(const Model& model, const VectorXd& q, double load_factor, Workspace& ws);
+
+/// Weights of the iteration matrix (Drake's discrete_time_integrator: the integrator maps the
+/// Newton unknown to (q, v, a) and supplies these).
+struct IterationWeights {
+  double mass = 0.0;       ///< c_M
+  double damping = 0.0;    ///< c_C
+  double stiffness = 1.0;  ///< c_K
+};
+
+/// matrix = c_M M + c_C ∂Q_int/∂q̇ + c_K (∂Q_int/∂q − ∂Q_ext/∂q), restricted to the unknowns.
+/// Also fills ws.internal_force and ws.viscous_force at (q, v) as a by-product.
+void AssembleIterationMatrix(const Model& model, const VectorXd& q, const VectorXd& v,
+                             const IterationWeights& weights, double load_factor, Workspace& ws,
+                             SystemMatrix* matrix);
+
+/// Constant mass matrix over the unknowns of `matrix`.
+void AssembleMassMatrix(const Model& model, const Workspace& ws, SystemMatrix* matrix);
+
+}  // namespace ancfnet

@@ -1,0 +1,99 @@
+#include "ancfnet/assembly/forces.hpp"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Dense>
+
+#include "ancfnet/model/model_builder.hpp"
+#include "ancfnet/state/state.hpp"
+
+namespace ancfnet {
+namespace {
+
+// Two cables, clamped and pinned, with damping, a point force, a moment and a distributed load.
+Model MakeLoadedModel() {
+  Material material{.youngs_modulus = 1.0e8,
+                    .density = 1200.0,
+                    .axial_damping_time = 0.01,
+                    .bending_damping_time = 0.02};
+  const CableProperties properties = MakeCableProperties(material, MakeCircleSection(0.02));
+  ModelBuilder builder;
+  builder.SetGravity(Vector3d(0.0, 0.0, -9.81));
+  builder.AddCable({"a", Vector3d::Zero(), Vector3d(1.0, 0.0, 0.0), 3, properties});
+  builder.AddCable({"b", Vector3d(0.0, 1.0, 0.0), Vector3d(0.0, 1.0, 1.0), 2, properties});
+  builder.AddClamp({"a", 0.0});
+  builder.AddPin({"b", 0.0});
+  builder.AddPointForce({"a", 0.7}, Vector3d(1.0, -2.0, 3.0));
+  builder.AddPointMoment({"a", 1.0}, Vector3d(0.5, 4.0, -1.0));
+  builder.AddDistributedLoad("b", Vector3d(0.3, 0.0, 0.1));
+  return builder.Build();
+}
+
+// A perturbed configuration and velocity so that every term is active.
+State MakePerturbedState(const Model& model) {
+  State state = MakeInitialState(model);
+  for (Index i = 0; i < model.num_dofs(); ++i) {
+    if (model.fixed()[i]) continue;
+    state.q[i] += 0.05 * std::sin(1.3 * i + 0.2);
+    state.v[i] = 0.4 * std::cos(0.7 * i);
+  }
+  return state;
+}
+
+VectorXd Residual(const Model& model, const VectorXd& q, const VectorXd& v, double load_factor,
+                  Workspace& ws, const DofMap& dofs) {
+  CalcInternalForces(model, q, v, ws);
+  CalcExternalForces(model, q, load_factor, ws);
+  VectorXd r;
+  dofs.Restrict(ws.internal_force - ws.external_force, &r);
+  return r;
+}
+
+TEST(Assembly, IterationMatrixMatchesFiniteDifferences) {
+  const Model model = MakeLoadedModel();
+  const State state = MakePerturbedState(model);
+  Workspace ws(model);
+  const DofMap dofs = DofMap::FreeCoordinates(model);
+  SystemMatrix matrix(model, dofs);
+  const double load_factor = 0.8;
+  for (const IterationWeights weights : {IterationWeights{.mass = 0.0, .damping = 0.0, .stiffness = 1.0},
+                                         IterationWeights{.mass = 0.0, .damping = 1.0, .stiffness = 0.0}}) {
+    AssembleIterationMatrix(model, state.q, state.v, weights, load_factor, ws, &matrix);
+    const MatrixXd analytic = MatrixXd(matrix.matrix());
+    MatrixXd numeric(dofs.num_unknowns(), dofs.num_unknowns());
+    const double h = 1e-7;
+    for (Index j = 0; j < dofs.num_unknowns(); ++j) {
+      VectorXd qp = state.q, qm = state.q, vp = state.v, vm = state.v;
+      const Index c = dofs.coordinates()[j];
+      (weights.stiffness != 0.0 ? qp : vp)[c] += h;
+      (weights.stiffness != 0.0 ? qm : vm)[c] -= h;
+      numeric.col(j) = (Residual(model, qp, vp, load_factor, ws, dofs) -
+                        Residual(model, qm, vm, load_factor, ws, dofs)) / (2 * h);
+    }
+    EXPECT_LT((analytic - numeric).norm(), 1e-6 * analytic.norm())
+        << "weights k=" << weights.stiffness << " c=" << weights.damping;
+  }
+}
+
+TEST(Assembly, InternalForcesOfIterationMatrixMatchForceOnlyPath) {
+  const Model model = MakeLoadedModel();
+  const State state = MakePerturbedState(model);
+  Workspace ws(model);
+  const DofMap dofs = DofMap::FreeCoordinates(model);
+  SystemMatrix matrix(model, dofs);
+  AssembleIterationMatrix(model, state.q, state.v, {.stiffness = 1.0}, 1.0, ws, &matrix);
+  const VectorXd from_matrix = ws.internal_force;
+  CalcInternalForces(model, state.q, state.v, ws);
+  EXPECT_LT((from_matrix - ws.internal_force).norm(), 1e-12 * ws.internal_force.norm());
+}
+
+TEST(Assembly, GravityForceSumsToWeight) {
+  const Model model = MakeLoadedModel();
+  Workspace ws(model);
+  double fz = 0.0;
+  for (Index node = 0; node < model.num_nodes(); ++node) fz += ws.gravity_force[Model::NodeDof(node) + 2];
+  EXPECT_NEAR(fz, -9.81 * model.total_mass(), 1e-12);
+}
+
+}  // namespace
+}  // namespace ancfnet

@@ -1,0 +1,62 @@
+#pragma once
+/// @file Newton iterations with Jacobian reuse, optional backtracking line search and a
+/// divergence check. The problem (a time step or a load increment) supplies the residual, the
+/// iteration matrix and how an increment of the unknown changes its state.
+
+#include <string>
+
+#include "ancfnet/common/types.hpp"
+#include "ancfnet/solvers/analysis_settings.hpp"
+#include "ancfnet/solvers/linear_solver.hpp"
+
+namespace ancfnet {
+
+/// What Newton needs of a problem R(x) = 0 whose unknown x lives inside the problem:
+///   Index size() const;
+///   void Reset();                                  back to the initial guess
+///   void CalcResidual(VectorXd* r);                R at the current iterate
+///   const SparseMatrixd& CalcIterationMatrix();    ∂R/∂x at the current iterate
+///   void ApplyIncrement(const VectorXd& dx, double scale);   x += scale · dx
+///   double IncrementNorm(const VectorXd& dx) const;   weighted RMS norm (≤ 1: converged)
+struct NewtonResult {
+  bool converged = false;
+  int iterations = 0;
+  int jacobian_updates = 0;
+  std::string failure;  ///< why it did not converge
+};
+
+class NewtonSolver {
+ public:
+  NewtonSolver(const NewtonSettings& settings, JacobianUpdate update, bool line_search,
+               LinearSolverType linear_solver = LinearSolverType::kKlu);
+
+  /// Iterates from the problem's initial guess. With a stale Jacobian that fails, retries once
+  /// from the initial guess with a fresh Jacobian at every iteration.
+  template <class Problem>
+  NewtonResult Solve(Problem& problem);
+
+  /// Marks the stored factorisation as stale (e.g. after a change of time step).
+  void InvalidateJacobian() { jacobian_fresh_ = false; has_factorization_ = false; }
+
+ private:
+  template <class Problem>
+  NewtonResult Iterate(Problem& problem, bool force_refresh);
+  template <class Problem>
+  bool Refresh(Problem& problem, NewtonResult* result);
+  template <class Problem>
+  double LineSearch(Problem& problem, double increment_norm);
+
+  NewtonSettings settings_;
+  JacobianUpdate update_;
+  bool line_search_;
+  SparseLinearSolver linear_solver_;
+  bool has_factorization_ = false;
+  bool jacobian_fresh_ = false;  // factorised at the current iterate
+  VectorXd residual_;
+  VectorXd increment_;
+  VectorXd simplified_;
+};
+
+}  // namespace ancfnet
+
+#include "ancfnet/solvers/newton_impl.hpp"

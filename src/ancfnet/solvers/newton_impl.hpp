@@ -1,0 +1,102 @@
+#pragma once
+/// @file Template definitions of NewtonSolver (included by newton.hpp).
+
+#include <cmath>
+
+namespace ancfnet {
+
+inline NewtonSolver::NewtonSolver(const NewtonSettings& settings, JacobianUpdate update,
+                                  bool line_search, LinearSolverType linear_solver)
+    : settings_(settings), update_(update), line_search_(line_search),
+      linear_solver_(linear_solver) {}
+
+template <class Problem>
+NewtonResult NewtonSolver::Solve(Problem& problem) {
+  const bool stale_allowed = update_ != JacobianUpdate::kEveryIteration;
+  NewtonResult result = Iterate(problem, /*force_refresh=*/false);
+  if (result.converged || !stale_allowed) return result;
+  problem.Reset();
+  NewtonResult retry = Iterate(problem, /*force_refresh=*/true);
+  retry.iterations += result.iterations;
+  retry.jacobian_updates += result.jacobian_updates;
+  return retry;
+}
+
+template <class Problem>
+bool NewtonSolver::Refresh(Problem& problem, NewtonResult* result) {
+  ++result->jacobian_updates;
+  has_factorization_ = linear_solver_.Factorize(problem.CalcIterationMatrix());
+  jacobian_fresh_ = has_factorization_;
+  if (!has_factorization_) result->failure = "singular iteration matrix";
+  return has_factorization_;
+}
+
+template <class Problem>
+double NewtonSolver::LineSearch(Problem& problem, double increment_norm) {
+  // Damped Newton with the natural monotonicity test of Deuflhard (2004, sec. 3.3, NLEQ-ERR):
+  // accept the step length α when the simplified correction d̄ = −J⁻¹ R(x + α d), computed with
+  // the current factorisation, satisfies ‖d̄‖ ≤ (1 − α/4) ‖d‖. Unlike a test on ‖R‖ it is affine
+  // invariant, so the very different stiffness of stretching and bending does not reject good
+  // steps. The increment is already applied with α = 1.
+  double alpha = 1.0;
+  for (int k = 0; k < 8; ++k) {
+    problem.CalcResidual(&residual_);
+    if (residual_.allFinite()) {
+      linear_solver_.Solve(residual_, &simplified_);
+      const double norm = problem.IncrementNorm(simplified_);
+      if (std::isfinite(norm) && norm <= (1.0 - 0.25 * alpha) * increment_norm) break;
+    }
+    problem.ApplyIncrement(increment_, -0.5 * alpha);
+    alpha *= 0.5;
+  }
+  return alpha;
+}
+
+template <class Problem>
+NewtonResult NewtonSolver::Iterate(Problem& problem, bool force_refresh) {
+  NewtonResult result;
+  const bool every_iteration = force_refresh || update_ == JacobianUpdate::kEveryIteration;
+  const bool refresh_first = every_iteration || update_ == JacobianUpdate::kEveryStep;
+  double previous_norm = 0.0;
+  for (int it = 0; it < settings_.max_iterations; ++it) {
+    result.iterations = it + 1;
+    problem.CalcResidual(&residual_);
+    if (!residual_.allFinite()) {
+      result.failure = "non-finite residual";
+      return result;
+    }
+    const bool refresh = !has_factorization_ || every_iteration || (it == 0 && refresh_first);
+    if (refresh && !Refresh(problem, &result)) return result;
+    linear_solver_.Solve(residual_, &increment_);
+    increment_ = -increment_;
+    const double norm = problem.IncrementNorm(increment_);
+    if (!std::isfinite(norm)) {
+      result.failure = "non-finite Newton increment";
+      return result;
+    }
+    const bool diverging = it > 0 && norm > 2.0 * previous_norm;
+    if (diverging && jacobian_fresh_) {
+      result.failure = "Newton iterations diverge";
+      return result;
+    }
+    if (diverging || (it > 0 && norm > 0.5 * previous_norm && !jacobian_fresh_)) {
+      // Slow or diverging with an old Jacobian: refresh it here and redo this iteration.
+      if (!Refresh(problem, &result)) return result;
+      linear_solver_.Solve(residual_, &increment_);
+      increment_ = -increment_;
+    }
+    problem.ApplyIncrement(increment_, 1.0);
+    jacobian_fresh_ = false;
+    const double norm_applied = problem.IncrementNorm(increment_);
+    const double step = line_search_ ? LineSearch(problem, norm_applied) : 1.0;
+    previous_norm = step * norm_applied;
+    if (previous_norm <= 1.0) {
+      result.converged = true;
+      return result;
+    }
+  }
+  result.failure = "no convergence in " + std::to_string(settings_.max_iterations) + " iterations";
+  return result;
+}
+
+}  // namespace ancfnet

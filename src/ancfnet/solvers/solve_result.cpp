@@ -1,0 +1,19 @@
+#include "ancfnet/solvers/solve_result.hpp"
+
+#include <cmath>
+
+namespace ancfnet {
+
+double WeightedRmsNorm(const VectorXd& dx, const VectorXd& x, const std::vector<Index>& coordinates,
+                       double scale, double rtol, double atol) {
+  if (dx.size() == 0) return 0.0;
+  double sum = 0.0;
+  for (Index i = 0; i < dx.size(); ++i) {
+    const double w = atol + rtol * std::abs(x[coordinates[i]]);
+    const double r = scale * dx[i] / w;
+    sum += r * r;
+  }
+  return std::sqrt(sum / static_cast<double>(dx.size()));
+}
+
+}  // namespace ancfnet

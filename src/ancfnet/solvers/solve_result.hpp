@@ -1,0 +1,33 @@
+#pragma once
+/// @file What an analysis reports back, and how it hands states to the outputs.
+
+#include <functional>
+#include <string>
+
+#include "ancfnet/analysis/energy.hpp"
+#include "ancfnet/state/state.hpp"
+
+namespace ancfnet {
+
+struct SolveStatistics {
+  long steps = 0;              ///< accepted time steps or load increments
+  long newton_iterations = 0;  ///< all iterations, rejected attempts included
+  long jacobian_updates = 0;   ///< factorisations of the iteration matrix
+  long step_cuts = 0;          ///< rejected attempts followed by a smaller step
+};
+
+struct SolveResult {
+  SolveStatistics statistics;
+  bool completed = true;
+  std::string message;  ///< why the analysis stopped early
+};
+
+/// Called with the state at t = 0 (load factor 0) and at every output step.
+using OutputCallback = std::function<void(const State&, const EnergyAccount&)>;
+
+/// Weighted RMS norm √(mean_i (dx_i / (atol + rtol |x_i|))²) over the unknowns (Hairer &
+/// Wanner 1996, II.4); `coordinates` maps unknown i to its entry of x.
+double WeightedRmsNorm(const VectorXd& dx, const VectorXd& x, const std::vector<Index>& coordinates,
+                       double scale, double rtol, double atol);
+
+}  // namespace ancfnet

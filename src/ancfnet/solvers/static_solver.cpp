@@ -1,0 +1,107 @@
+#include "ancfnet/solvers/static_solver.hpp"
+
+#include <fmt/format.h>
+
+#include "ancfnet/analysis/energy_tracker.hpp"
+#include "ancfnet/assembly/forces.hpp"
+#include "ancfnet/solvers/newton.hpp"
+
+namespace ancfnet {
+namespace {
+
+// One load increment as a Newton problem: R(q) = Q_int(q) − λ Q_ext(q) over the unknowns.
+class LoadIncrement {
+ public:
+  LoadIncrement(const Model& model, const NewtonSettings& newton, Workspace& ws, State& state)
+      : model_(model), newton_(newton), ws_(ws), state_(state),
+        dofs_(DofMap::FreeCoordinates(model)), matrix_(model, dofs_),
+        q_start_(state.q), residual_full_(state.q.size()) {}
+
+  void Begin(double load_factor) {
+    load_factor_ = load_factor;
+    q_start_ = state_.q;
+  }
+  Index size() const { return dofs_.num_unknowns(); }
+  void Reset() { state_.q = q_start_; }
+  void CalcResidual(VectorXd* r) {
+    CalcInternalForces(model_, state_.q, state_.v, ws_);
+    CalcExternalForces(model_, state_.q, load_factor_, ws_);
+    residual_full_ = ws_.internal_force - ws_.external_force;
+    dofs_.Restrict(residual_full_, r);
+  }
+  const SparseMatrixd& CalcIterationMatrix() {
+    AssembleIterationMatrix(model_, state_.q, state_.v, {.stiffness = 1.0}, load_factor_, ws_,
+                            &matrix_);
+    return matrix_.matrix();
+  }
+  void ApplyIncrement(const VectorXd& dx, double scale) { dofs_.AddExpanded(dx, scale, &state_.q); }
+  double IncrementNorm(const VectorXd& dx) const {
+    return WeightedRmsNorm(dx, state_.q, dofs_.coordinates(), 1.0, newton_.relative_tolerance,
+                           newton_.absolute_tolerance);
+  }
+
+ private:
+  const Model& model_;
+  NewtonSettings newton_;
+  Workspace& ws_;
+  State& state_;
+  DofMap dofs_;
+  SystemMatrix matrix_;
+  double load_factor_ = 0.0;
+  VectorXd q_start_;
+  VectorXd residual_full_;
+};
+
+}  // namespace
+
+SolveResult SolveStatic(const Model& model, const StaticSettings& settings,
+                        const OutputCallback& output, State* state) {
+  Workspace ws(model);
+  state->v.setZero();
+  state->a.setZero();
+  state->t = 0.0;
+  CalcInternalForces(model, state->q, state->v, ws);
+  CalcExternalForces(model, state->q, 0.0, ws);
+  EnergyTracker energy(model, ws, state->q);
+  output(*state, energy.account());
+
+  LoadIncrement increment(model, settings.newton, ws, *state);
+  NewtonSolver newton(settings.newton, JacobianUpdate::kEveryIteration, settings.line_search);
+  SolveResult result;
+  const double nominal = 1.0 / settings.load_steps;
+  double load_factor = 0.0;
+  double step = nominal;
+  int cuts_in_a_row = 0;
+  while (load_factor < 1.0 - 1e-12) {
+    const double target = std::min(load_factor + step, 1.0);
+    increment.Begin(target);
+    const NewtonResult newton_result = newton.Solve(increment);
+    result.statistics.newton_iterations += newton_result.iterations;
+    result.statistics.jacobian_updates += newton_result.jacobian_updates;
+    if (!newton_result.converged) {
+      increment.Reset();
+      if (++cuts_in_a_row > settings.max_step_cuts) {
+        result.completed = false;
+        result.message = fmt::format(
+            "static solve failed at load factor {:.6g} (increment {:.3g} after {} cuts): {}",
+            target, step, settings.max_step_cuts, newton_result.failure);
+        return result;
+      }
+      ++result.statistics.step_cuts;
+      step *= 0.5;
+      continue;
+    }
+    load_factor = target;
+    state->t = load_factor;
+    ++result.statistics.steps;
+    if (cuts_in_a_row == 0) step = std::min(2.0 * step, nominal);
+    cuts_in_a_row = 0;
+    CalcInternalForces(model, state->q, state->v, ws);
+    CalcExternalForces(model, state->q, load_factor, ws);
+    energy.Advance(model, ws, state->q, state->v, load_factor);
+    output(*state, energy.account());
+  }
+  return result;
+}
+
+}  // namespace ancfnet

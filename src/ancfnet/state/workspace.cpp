@@ -1,0 +1,35 @@
+#include "ancfnet/state/workspace.hpp"
+
+#include "ancfnet/model/model.hpp"
+
+namespace ancfnet {
+
+Workspace::Workspace(const Model& model)
+    : element_mass(model.elements().size()),
+      gravity_force(VectorXd::Zero(model.num_dofs())),
+      distributed_force(VectorXd::Zero(model.num_dofs())),
+      element_force(model.elements().size()),
+      element_viscous_force(model.elements().size()),
+      element_stiffness(model.elements().size()),
+      element_damping(model.elements().size()),
+      internal_force(VectorXd::Zero(model.num_dofs())),
+      viscous_force(VectorXd::Zero(model.num_dofs())),
+      applied_force(VectorXd::Zero(model.num_dofs())),
+      external_force(VectorXd::Zero(model.num_dofs())) {
+  const auto& elements = model.elements();
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    const CableElementParameters& p = elements[e].parameters;
+    element_mass[e] = CalcCableMassMatrix(p);
+    const Vector12d fg = CalcCableDistributedForce(p, p.mass_per_length * model.gravity());
+    for (int i = 0; i < kCableElementDofs; ++i) gravity_force[elements[e].dofs[i]] += fg[i];
+  }
+  for (const DistributedLoad& load : model.distributed_loads()) {
+    const Cable& cable = model.cables()[load.cable];
+    for (Index e = cable.first_element; e < cable.first_element + cable.num_elements; ++e) {
+      const Vector12d f = CalcCableDistributedForce(elements[e].parameters, load.force_per_length);
+      for (int i = 0; i < kCableElementDofs; ++i) distributed_force[elements[e].dofs[i]] += f[i];
+    }
+  }
+}
+
+}  // namespace ancfnet

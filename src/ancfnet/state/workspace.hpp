@@ -1,0 +1,34 @@
+#pragma once
+/// @file Workspace: scratch storage sized once for a model, so that the time loop allocates
+/// nothing. Each field says which stage fills it.
+
+#include <vector>
+
+#include "ancfnet/common/types.hpp"
+
+namespace ancfnet {
+
+class Model;
+
+struct Workspace {
+  explicit Workspace(const Model& model);
+
+  // Constant, filled by the constructor.
+  std::vector<Matrix12d> element_mass;  ///< consistent mass matrix of each element
+  VectorXd gravity_force;               ///< ∫ ρA Sᵀ g dx, assembled (N)
+  VectorXd distributed_force;           ///< ∫ Sᵀ w dx of the distributed loads (N)
+
+  // Per element, filled by CalcInternalForces / AssembleIterationMatrix.
+  std::vector<Vector12d> element_force;
+  std::vector<Vector12d> element_viscous_force;
+  std::vector<Matrix12d> element_stiffness;
+  std::vector<Matrix12d> element_damping;
+
+  // Global coordinate vectors (all coordinates, fixed included).
+  VectorXd internal_force;  ///< Q_int(q, v): CalcInternalForces
+  VectorXd viscous_force;   ///< its Kelvin–Voigt part: CalcInternalForces
+  VectorXd applied_force;   ///< loads other than gravity at the load factor: CalcExternalForces
+  VectorXd external_force;  ///< applied_force + λ · gravity_force: CalcExternalForces
+};
+
+}  // namespace ancfnet

@@ -1,0 +1,28 @@
+#pragma once
+/// @file Models shared by the verification cases, built through the public API.
+
+#include "ancfnet/model/model_builder.hpp"
+
+namespace ancfnet::verification {
+
+/// Cantilever of the static example: L = 1 m, E = 2e11 Pa, 10 × 10 mm square, clamped at
+/// x = 0, along +x. EI = 2e11 · 1e-8 / 12 N m².
+inline ModelBuilder MakeCantilever(int elements, int axial_gauss_points = 3,
+                                   int bending_gauss_points = 4) {
+  Material steel{.youngs_modulus = 2.0e11, .density = 7800.0};
+  CableProperties properties = MakeCableProperties(steel, MakeRectangleSection(0.01, 0.01));
+  properties.axial_gauss_points = axial_gauss_points;
+  properties.bending_gauss_points = bending_gauss_points;
+  ModelBuilder builder;
+  builder.AddCable({.name = "beam",
+                    .start = Vector3d::Zero(),
+                    .end = Vector3d(1.0, 0.0, 0.0),
+                    .num_elements = elements,
+                    .properties = properties});
+  builder.AddClamp({"beam", 0.0});
+  return builder;
+}
+
+inline double CantileverBendingStiffness() { return 2.0e11 * 1e-8 / 12.0; }
+
+}  // namespace ancfnet::verification
