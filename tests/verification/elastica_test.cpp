@@ -65,7 +65,9 @@ TEST(Elastica, ErrorFallsWithRefinement) {
     const double error = std::hypot(tip.u - reference.u, tip.w - reference.w);
     std::printf("k = 10, %2d elements: u/L = %.6f, w/L = %.6f, error %.2e\n", elements, tip.u,
                 tip.w, error);
-    if (previous > 0.0) EXPECT_GT(previous / error, 4.0) << elements << " elements";
+    if (previous > 0.0) {
+      EXPECT_GT(previous / error, 4.0) << elements << " elements";
+    }
     previous = error;
   }
 }

@@ -26,3 +26,26 @@ inline ModelBuilder MakeCantilever(int elements, int axial_gauss_points = 3,
 inline double CantileverBendingStiffness() { return 2.0e11 * 1e-8 / 12.0; }
 
 }  // namespace ancfnet::verification
+
+namespace ancfnet::verification {
+
+/// Flexible pendulum of the issue: L = 1 m, circular d = 0.01 m, E = 2e9 Pa, ρ = 1000 kg/m³,
+/// pinned at the origin, released horizontal (along +x) under g = 9.81 m/s² along −z.
+inline Model MakePendulum(int elements, double damping_time = 0.0) {
+  Material material{.youngs_modulus = 2.0e9,
+                    .density = 1000.0,
+                    .axial_damping_time = damping_time,
+                    .bending_damping_time = damping_time};
+  const CableProperties properties = MakeCableProperties(material, MakeCircleSection(0.01));
+  ModelBuilder builder;
+  builder.SetGravity(Vector3d(0.0, 0.0, -9.81));
+  builder.AddCable({.name = "pendulum",
+                    .start = Vector3d::Zero(),
+                    .end = Vector3d(1.0, 0.0, 0.0),
+                    .num_elements = elements,
+                    .properties = properties});
+  builder.AddPin({"pendulum", 0.0});
+  return builder.Build();
+}
+
+}  // namespace ancfnet::verification

@@ -1,0 +1,266 @@
+#include "ancfnet/io/scene_loader.hpp"
+
+#include <fstream>
+#include <optional>
+#include <sstream>
+#include <system_error>
+#include <utility>
+#include <vector>
+
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
+
+#include "ancfnet/common/error.hpp"
+#include "ancfnet/io/closest_name.hpp"
+#include "ancfnet/io/scene_settings_reader.hpp"
+#include "ancfnet/io/yaml_reader.hpp"
+#include "ancfnet/model/model_builder.hpp"
+
+namespace ancfnet {
+namespace {
+
+// Named definitions in file order (the order they are listed in messages).
+template <typename T>
+using NamedList = std::vector<std::pair<std::string, T>>;
+
+struct Library {
+  NamedList<Material> materials;
+  NamedList<Section> sections;
+};
+
+// The definition named by `value`; the error lists the known names or suggests the closest.
+template <typename T>
+const T& Lookup(const NamedList<T>& list, const YamlValue& value, std::string_view what,
+                std::string_view list_label) {
+  const std::string name = value.AsString();
+  std::vector<std::string_view> names;
+  for (const auto& [known, definition] : list) {
+    if (known == name) return definition;
+    names.push_back(known);
+  }
+  value.Fail(fmt::format("no {} named '{}'{}", what, name, SuggestName(name, names, list_label)));
+}
+
+Material ReadMaterial(const YamlValue& value) {
+  const YamlMap map = value.AsMap();
+  map.CheckKeys({"youngs_modulus", "density", "axial_damping_time", "bending_damping_time"});
+  Material material;
+  material.youngs_modulus = map.Get("youngs_modulus").AsPositive();
+  material.density = map.Get("density").AsPositive();
+  if (auto v = map.Find("axial_damping_time")) material.axial_damping_time = v->AsNonNegative();
+  if (auto v = map.Find("bending_damping_time")) material.bending_damping_time = v->AsNonNegative();
+  return material;
+}
+
+Section ReadSection(const YamlValue& value) {
+  const YamlMap map = value.AsMap();
+  const std::size_t shape = map.Get("shape").AsChoice({"circle", "rectangle"});
+  if (shape == 0) {
+    map.CheckKeys({"shape", "diameter"});
+    return MakeCircleSection(map.Get("diameter").AsPositive());
+  }
+  map.CheckKeys({"shape", "width", "height"});
+  const double width = map.Get("width").AsPositive();
+  return MakeRectangleSection(width, map.Get("height").AsPositive());
+}
+
+// A map NAME → definition, each read by `read`.
+template <typename T, typename Read>
+NamedList<T> ReadNamed(const YamlMap& scene, std::string_view key, Read read) {
+  NamedList<T> list;
+  if (const std::optional<YamlValue> value = scene.Find(key))
+    for (const YamlMap::Entry& entry : value->AsMap().entries())
+      list.emplace_back(entry.key, read(entry.value));
+  return list;
+}
+
+// POINT: "CABLE.start", "CABLE.end" (split at the last '.'), or {cable: NAME, s: FRACTION}.
+CablePointRef ReadPoint(const YamlValue& value) {
+  constexpr const char* kForms = "a point CABLE.start, CABLE.end or {cable: NAME, s: FRACTION}";
+  if (value.IsMap()) {
+    const YamlMap map = value.AsMap();
+    map.CheckKeys({"cable", "s"});
+    return {map.Get("cable").AsString(), map.Get("s").AsNumberIn(0.0, 1.0)};
+  }
+  if (!value.IsScalar()) value.FailExpected(kForms);
+  const std::string text = value.AsString();
+  const std::size_t dot = text.rfind('.');
+  if (dot == std::string::npos || dot == 0) value.FailExpected(kForms);
+  const std::string end = text.substr(dot + 1);
+  if (end != "start" && end != "end") value.FailExpected(kForms);
+  return {text.substr(0, dot), end == "start" ? 0.0 : 1.0};
+}
+
+// initial_velocity: [vx, vy, vz], or {linear: v, angular: ω, center: c} for v + ω × (r − c).
+void ReadInitialVelocity(const YamlValue& value, const std::string& cable, ModelBuilder* builder) {
+  Vector3d linear = Vector3d::Zero(), angular = Vector3d::Zero(), center = Vector3d::Zero();
+  if (value.IsSequence()) {
+    linear = value.AsVector3();
+  } else if (value.IsMap()) {
+    const YamlMap map = value.AsMap();
+    map.CheckKeys({"linear", "angular", "center"});
+    if (auto v = map.Find("linear")) linear = v->AsVector3();
+    if (auto v = map.Find("angular")) angular = v->AsVector3();
+    if (auto v = map.Find("center")) center = v->AsVector3();
+  } else {
+    value.FailExpected("a velocity [vx, vy, vz] or a map {linear, angular, center}");
+  }
+  value.Locate([&] { builder->SetInitialVelocity(cable, linear, angular, center); });
+}
+
+void ReadCable(const YamlValue& item, const Library& library, ModelBuilder* builder) {
+  const YamlMap map = item.AsMap();
+  map.CheckKeys({"name", "start", "end", "elements", "material", "section", "tension_only",
+                 "axial_gauss_points", "bending_gauss_points", "initial_velocity"});
+  CableSpec spec;
+  spec.name = map.Get("name").AsString();
+  spec.start = map.Get("start").AsVector3();
+  spec.end = map.Get("end").AsVector3();
+  spec.num_elements = map.Get("elements").AsInt(1);
+  const Material& material = Lookup(library.materials, map.Get("material"), "material",
+                                    "known materials");
+  const Section& section = Lookup(library.sections, map.Get("section"), "section",
+                                  "known sections");
+  CableProperties& properties = spec.properties;
+  properties = MakeCableProperties(material, section);
+  if (auto v = map.Find("tension_only")) properties.tension_only = v->AsBool();
+  if (auto v = map.Find("axial_gauss_points")) properties.axial_gauss_points = v->AsInt(1, 8);
+  if (auto v = map.Find("bending_gauss_points")) properties.bending_gauss_points = v->AsInt(1, 8);
+  item.Locate([&] { builder->AddCable(spec); });
+  if (auto v = map.Find("initial_velocity")) ReadInitialVelocity(*v, spec.name, builder);
+}
+
+void ReadConstraint(const YamlValue& item, ModelBuilder* builder) {
+  const YamlMap map = item.AsMap();
+  const std::size_t type = map.Get("type").AsChoice({"clamp", "pin", "fix"});
+  if (type == 2) {
+    map.CheckKeys({"type", "at", "coordinates"});
+  } else {
+    map.CheckKeys({"type", "at"});
+  }
+  const YamlValue at = map.Get("at");
+  const CablePointRef point = ReadPoint(at);
+  if (type == 0) return at.Locate([&] { builder->AddClamp(point); });
+  if (type == 1) return at.Locate([&] { builder->AddPin(point); });
+  CoordinateMask mask{};
+  for (const YamlValue& coordinate : map.Get("coordinates").AsList(/*non_empty=*/true))
+    mask[coordinate.AsChoice({"x", "y", "z", "dx", "dy", "dz"})] = true;
+  at.Locate([&] { builder->FixCoordinates(point, mask); });
+}
+
+void ReadLoad(const YamlValue& item, ModelBuilder* builder) {
+  const YamlMap map = item.AsMap();
+  const std::size_t type = map.Get("type").AsChoice({"point_force", "point_moment", "distributed"});
+  if (type == 0) {
+    map.CheckKeys({"type", "at", "force"});
+    const YamlValue at = map.Get("at");
+    const CablePointRef point = ReadPoint(at);
+    const Vector3d force = map.Get("force").AsVector3();
+    at.Locate([&] { builder->AddPointForce(point, force); });
+  } else if (type == 1) {
+    map.CheckKeys({"type", "at", "moment"});
+    const YamlValue at = map.Get("at");
+    const CablePointRef point = ReadPoint(at);
+    const Vector3d moment = map.Get("moment").AsVector3();
+    at.Locate([&] { builder->AddPointMoment(point, moment); });
+  } else {
+    map.CheckKeys({"type", "cable", "force_per_length"});
+    const YamlValue cable = map.Get("cable");
+    const std::string name = cable.AsString();
+    const Vector3d force_per_length = map.Get("force_per_length").AsVector3();
+    cable.Locate([&] { builder->AddDistributedLoad(name, force_per_length); });
+  }
+}
+
+// Probes are read once the model is built: their points resolve to material points.
+std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model) {
+  std::vector<Probe> probes;
+  for (const YamlValue& item : list.AsList()) {
+    const YamlMap map = item.AsMap();
+    Probe probe;
+    probe.quantity = map.Get("quantity").AsEnum<ProbeQuantity>(
+        {{"position", ProbeQuantity::kPosition},
+         {"velocity", ProbeQuantity::kVelocity},
+         {"energy", ProbeQuantity::kEnergy}});
+    const bool whole_system = probe.quantity == ProbeQuantity::kEnergy;
+    if (auto at = map.Find("at"); at && whole_system)
+      at->Fail("an energy probe reads the whole system and takes no point");
+    map.CheckKeys({"name", "quantity", "at"});
+    const YamlValue name = map.Get("name");
+    probe.name = name.AsString();
+    for (const Probe& other : probes)
+      if (other.name == probe.name) name.Fail(fmt::format("two probes are named '{}'", probe.name));
+    if (!whole_system) {
+      const YamlValue at = map.Get("at");
+      const CablePointRef point = ReadPoint(at);
+      probe.point = at.Locate(
+          [&] { return model.LocateCablePoint(model.FindCable(point.cable), point.s); });
+    }
+    probes.push_back(std::move(probe));
+  }
+  return probes;
+}
+
+Scene ReadScene(const YamlValue& root) {
+  if (root.node().IsNull())
+    root.FailPlain("the scene is empty (expected a map with materials, sections and cables)");
+  const YamlMap scene = root.AsMap();
+  scene.CheckKeys({"gravity", "materials", "sections", "cables", "constraints", "loads", "probes",
+                   "analysis", "output"});
+  ModelBuilder builder;
+  if (auto v = scene.Find("gravity")) {
+    const Vector3d gravity = v->AsVector3();
+    v->Locate([&] { builder.SetGravity(gravity); });
+  }
+  Library library;
+  library.materials = ReadNamed<Material>(scene, "materials", ReadMaterial);
+  library.sections = ReadNamed<Section>(scene, "sections", ReadSection);
+  for (const YamlValue& item : scene.Get("cables").AsList(/*non_empty=*/true))
+    ReadCable(item, library, &builder);
+  if (auto v = scene.Find("constraints"))
+    for (const YamlValue& item : v->AsList()) ReadConstraint(item, &builder);
+  if (auto v = scene.Find("loads"))
+    for (const YamlValue& item : v->AsList()) ReadLoad(item, &builder);
+
+  Scene result;
+  result.model = root.Locate([&] { return builder.Build(); });
+  if (auto v = scene.Find("probes")) result.probes = ReadProbes(*v, result.model);
+  if (auto v = scene.Find("analysis")) result.analysis = ReadAnalysisSettings(*v);
+  if (auto v = scene.Find("output")) result.output = ReadOutputSettings(*v);
+  result.source = root.source();
+  return result;
+}
+
+[[noreturn]] void ThrowYamlError(const std::string& source, const YAML::Exception& error) {
+  if (error.mark.is_null()) throw InputError(fmt::format("{}: invalid YAML: {}", source, error.msg));
+  throw InputError(fmt::format("{}:{}:{}: invalid YAML: {}", source, error.mark.line + 1,
+                               error.mark.column + 1, error.msg));
+}
+
+}  // namespace
+
+Scene ParseScene(const std::string& yaml_text, const std::string& source_name) {
+  YAML::Node root;
+  try {
+    root = YAML::Load(yaml_text);
+  } catch (const YAML::Exception& error) {
+    ThrowYamlError(source_name, error);
+  }
+  try {
+    return ReadScene(YamlValue::Root(root, source_name));
+  } catch (const YAML::Exception& error) {  // a node access the reader did not foresee
+    ThrowYamlError(source_name, error);
+  }
+}
+
+Scene LoadScene(const std::filesystem::path& file) {
+  std::error_code error;
+  std::ifstream in(file, std::ios::binary);
+  if (!in || std::filesystem::is_directory(file, error))
+    throw InputError(fmt::format("{}: cannot open scene file", file.string()));
+  std::ostringstream text;
+  text << in.rdbuf();
+  return ParseScene(text.str(), file.string());
+}
+
+}  // namespace ancfnet

@@ -1,0 +1,23 @@
+#pragma once
+/// @file Loading a Scene from a YAML scene file. The format — every key, its unit, default and
+/// allowed values — is described in docs/scene-format.md. The Model is built through
+/// ModelBuilder, the same public API a C++ program uses.
+
+#include <filesystem>
+#include <string>
+
+#include "ancfnet/io/scene.hpp"
+
+namespace ancfnet {
+
+/// Reads and parses the scene file `file`. Throws InputError "FILE: cannot open scene file" when
+/// it cannot be read, and as ParseScene otherwise.
+Scene LoadScene(const std::filesystem::path& file);
+
+/// Parses a scene from YAML text; `source_name` names it in messages and in Scene::source.
+/// Throws InputError with a one-line message "SOURCE:LINE:COLUMN: what is wrong (key 'KEY')" on
+/// malformed YAML, an unknown or missing key, a value of the wrong type or out of range, an
+/// unknown name, or a model the ModelBuilder refuses.
+Scene ParseScene(const std::string& yaml_text, const std::string& source_name = "<string>");
+
+}  // namespace ancfnet

@@ -1,0 +1,72 @@
+#include "ancfnet/io/scene_settings_reader.hpp"
+
+#include <optional>
+
+#include <fmt/format.h>
+
+namespace ancfnet {
+namespace {
+
+// Newton keys, applied to `newton` (over its own defaults) when given.
+void ReadNewtonSettings(const YamlMap& map, NewtonSettings* newton) {
+  if (auto v = map.Find("max_iterations")) newton->max_iterations = v->AsInt(1);
+  if (auto v = map.Find("relative_tolerance")) newton->relative_tolerance = v->AsPositive();
+  if (auto v = map.Find("absolute_tolerance")) newton->absolute_tolerance = v->AsPositive();
+}
+
+void ReadStaticSettings(const YamlMap& map, StaticSettings* statics) {
+  if (auto v = map.Find("load_steps")) statics->load_steps = v->AsInt(1);
+  if (auto v = map.Find("max_step_cuts")) statics->max_step_cuts = v->AsInt(0);
+  if (auto v = map.Find("line_search")) statics->line_search = v->AsBool();
+  ReadNewtonSettings(map, &statics->newton);
+}
+
+void ReadDynamicSettings(const YamlMap& map, DynamicSettings* dynamics) {
+  if (auto v = map.Find("integrator")) {
+    dynamics->integrator = v->AsEnum<IntegratorType>(
+        {{"generalized_alpha", IntegratorType::kGeneralizedAlpha},
+         {"explicit_verlet", IntegratorType::kExplicitVerlet}});
+  }
+  if (auto v = map.Find("spectral_radius")) dynamics->spectral_radius = v->AsNumberIn(0.0, 1.0);
+  if (auto v = map.Find("time_step")) dynamics->time_step = v->AsPositive();
+  if (auto v = map.Find("end_time")) dynamics->end_time = v->AsPositive();
+  if (auto v = map.Find("min_time_step")) {
+    dynamics->min_time_step = v->AsPositive();
+    if (dynamics->min_time_step > dynamics->time_step)
+      v->FailExpected(fmt::format("a number ≤ time_step ({})", dynamics->time_step));
+  }
+  if (auto v = map.Find("jacobian_update")) {
+    dynamics->jacobian_update = v->AsEnum<JacobianUpdate>(
+        {{"every_iteration", JacobianUpdate::kEveryIteration},
+         {"every_step", JacobianUpdate::kEveryStep},
+         {"adaptive", JacobianUpdate::kAdaptive}});
+  }
+  ReadNewtonSettings(map, &dynamics->newton);
+}
+
+}  // namespace
+
+AnalysisSettings ReadAnalysisSettings(const YamlValue& analysis) {
+  const YamlMap map = analysis.AsMap();
+  map.CheckKeys({"type", "load_steps", "max_step_cuts", "line_search", "integrator",
+                 "spectral_radius", "time_step", "end_time", "min_time_step", "jacobian_update",
+                 "max_iterations", "relative_tolerance", "absolute_tolerance"});
+  AnalysisSettings settings;
+  settings.type = map.Get("type").AsEnum<AnalysisType>(
+      {{"static", AnalysisType::kStatic}, {"dynamic", AnalysisType::kDynamic}});
+  ReadStaticSettings(map, &settings.statics);
+  ReadDynamicSettings(map, &settings.dynamics);
+  return settings;
+}
+
+OutputSettings ReadOutputSettings(const YamlValue& output) {
+  const YamlMap map = output.AsMap();
+  map.CheckKeys({"interval", "vtk", "vtk_points_per_element"});
+  OutputSettings settings;
+  if (auto v = map.Find("interval")) settings.interval = v->AsNonNegative();
+  if (auto v = map.Find("vtk")) settings.write_vtk = v->AsBool();
+  if (auto v = map.Find("vtk_points_per_element")) settings.vtk_points_per_element = v->AsInt(1, 64);
+  return settings;
+}
+
+}  // namespace ancfnet

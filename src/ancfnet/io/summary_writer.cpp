@@ -1,0 +1,77 @@
+#include "ancfnet/io/summary_writer.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "ancfnet/common/error.hpp"
+
+namespace ancfnet {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// A number, or null when it is NaN or infinite (JSON has no such values).
+Json Number(double value) { return std::isfinite(value) ? Json(value) : Json(nullptr); }
+
+Json EnergyJson(const EnergyAccount& energy) {
+  return {{"kinetic", Number(energy.kinetic)},
+          {"strain", Number(energy.strain)},
+          {"gravity", Number(energy.gravity)},
+          {"work", Number(energy.work)},
+          {"dissipated", Number(energy.dissipated)},
+          {"balance", Number(energy.Balance())}};
+}
+
+Json ProbeJson(const Probe& probe, const Model& model, const State& state,
+               const EnergyAccount& energy) {
+  std::vector<double> values;
+  EvaluateProbe(probe, model, state, energy, &values);
+  switch (probe.quantity) {
+    case ProbeQuantity::kPosition:
+    case ProbeQuantity::kVelocity: {
+      Json vector = Json::array();
+      for (double value : values) vector.push_back(Number(value));
+      return {{probe.quantity == ProbeQuantity::kPosition ? "position" : "velocity", vector}};
+    }
+    case ProbeQuantity::kEnergy: {
+      // Keyed by the column suffixes: NAME.kinetic → "kinetic", …
+      const std::vector<std::string> columns = ProbeColumns(probe);
+      Json energies = Json::object();
+      for (std::size_t i = 0; i < values.size(); ++i)
+        energies[columns[i].substr(probe.name.size() + 1)] = Number(values[i]);
+      return {{"energy", energies}};
+    }
+  }
+  return Json::object();
+}
+
+}  // namespace
+
+void WriteSummaryJson(const std::filesystem::path& path, const RunSummary& summary,
+                      const std::vector<Probe>& probes, const Model& model, const State& state) {
+  Json probe_values = Json::object();
+  for (const Probe& probe : probes)
+    probe_values[probe.name] = ProbeJson(probe, model, state, summary.energy);
+  const Json json = {
+      {"status", summary.completed ? "completed" : "failed"},
+      {"message", summary.message},
+      {"analysis", summary.analysis},
+      {"time", Number(summary.end_time)},
+      {"steps", summary.steps},
+      {"newton_iterations", summary.newton_iterations},
+      {"jacobian_updates", summary.jacobian_updates},
+      {"step_cuts", summary.step_cuts},
+      {"wall_time_s", Number(summary.wall_time_s)},
+      {"energy", EnergyJson(summary.energy)},
+      {"probes", probe_values},
+  };
+  std::ofstream file(path);
+  // Invalid UTF-8 in a message is replaced rather than failing the whole summary.
+  file << json.dump(2, ' ', false, Json::error_handler_t::replace) << '\n';
+  file.close();
+  if (!file) throw InputError(fmt::format("cannot write {}", path.string()));
+}
+
+}  // namespace ancfnet

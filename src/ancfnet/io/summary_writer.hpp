@@ -1,0 +1,39 @@
+#pragma once
+/// @file The JSON summary of a run: how it ended, what it cost, and the final probe values.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "ancfnet/analysis/energy.hpp"
+#include "ancfnet/analysis/probe.hpp"
+#include "ancfnet/model/model.hpp"
+#include "ancfnet/state/state.hpp"
+
+namespace ancfnet {
+
+/// Counters and outcome of a static or dynamic run.
+struct RunSummary {
+  std::string analysis;    ///< "static" or "dynamic"
+  bool completed = true;   ///< false when the solver gave up
+  std::string message;     ///< why the run failed (empty when it completed)
+  double end_time = 0.0;   ///< final time (s) or load factor reached
+  long steps = 0;          ///< accepted steps
+  long newton_iterations = 0;
+  long jacobian_updates = 0;
+  long step_cuts = 0;
+  double wall_time_s = 0.0;  ///< s
+  EnergyAccount energy;      ///< energies at the end (J)
+};
+
+/// Writes `summary` and the final values of `probes` (EvaluateProbe on `state` with
+/// summary.energy) to `path` as JSON, indented by 2:
+/// `{"status": "completed"|"failed", "message", "analysis", "time", "steps", "newton_iterations",
+/// "jacobian_updates", "step_cuts", "wall_time_s", "energy": {"kinetic", "strain", "gravity",
+/// "work", "dissipated", "balance"}, "probes": {NAME: {"position": [x, y, z]} |
+/// {"velocity": [vx, vy, vz]} | {"energy": {"kinetic", …}}}}`. Units as in the CSV (s, m, m/s,
+/// J). Non-finite numbers are written as null. Throws InputError "cannot write PATH" on failure.
+void WriteSummaryJson(const std::filesystem::path& path, const RunSummary& summary,
+                      const std::vector<Probe>& probes, const Model& model, const State& state);
+
+}  // namespace ancfnet

@@ -1,0 +1,158 @@
+#include "ancfnet/io/vtk_writer.hpp"
+
+#include <cstdio>
+#include <fmt/format.h>
+#include <iterator>
+#include <system_error>
+
+#include "ancfnet/common/error.hpp"
+#include "ancfnet/elements/ancf_cable.hpp"
+#include "ancfnet/elements/hermite_shape.hpp"
+
+namespace ancfnet {
+namespace {
+
+// Writes `text` to `path` (truncating it); throws InputError on any failure.
+void WriteTextFile(const std::filesystem::path& path, const std::string& text) {
+  std::FILE* file = std::fopen(path.c_str(), "w");
+  if (file == nullptr) throw InputError(fmt::format("cannot write {}", path.string()));
+  const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size();
+  if (std::fclose(file) != 0 || !written)
+    throw InputError(fmt::format("cannot write {}", path.string()));
+}
+
+// Appends `<DataArray …>` with the values given by `value(sample, out)` for every sample.
+template <typename Samples, typename Writer>
+void AppendDataArray(std::string* out, const char* name, int components, const Samples& samples,
+                     Writer write_value) {
+  auto it = std::back_inserter(*out);
+  fmt::format_to(it, "        <DataArray type=\"Float64\" Name=\"{}\" NumberOfComponents=\"{}\" "
+                     "format=\"ascii\">\n", name, components);
+  for (const auto& sample : samples) {
+    *out += "          ";
+    write_value(sample, it);
+    *out += '\n';
+  }
+  *out += "        </DataArray>\n";
+}
+
+}  // namespace
+
+VtkSeriesWriter::VtkSeriesWriter(const std::filesystem::path& directory,
+                                 const std::string& base_name, int points_per_element)
+    : directory_(directory), base_name_(base_name), points_per_element_(points_per_element) {
+  if (points_per_element < 1)
+    throw InputError(
+        fmt::format("VTK points per element must be at least 1 (got {})", points_per_element));
+  std::error_code error;
+  std::filesystem::create_directories(directory_, error);
+  if (error || !std::filesystem::is_directory(directory_))
+    throw InputError(fmt::format("cannot create directory {}", directory_.string()));
+}
+
+std::filesystem::path VtkSeriesWriter::FramePath(int index) const {
+  return directory_ / fmt::format("{}_{:06d}.vtp", base_name_, index);
+}
+
+void VtkSeriesWriter::WriteFrame(const Model& model, const State& state) {
+  CollectSamples(model, state);
+  const std::filesystem::path path = FramePath(num_frames());
+  WriteTextFile(path, FormatPolyData(model));
+  frames_.push_back({state.t, path.filename().string()});
+  WriteCollection();
+}
+
+void VtkSeriesWriter::CollectSamples(const Model& model, const State& state) {
+  samples_.clear();
+  for (const Cable& cable : model.cables()) {
+    for (Index k = 0; k < cable.num_elements; ++k) {
+      const CableElement& element = model.elements()[cable.first_element + k];
+      const CableElementParameters& p = element.parameters;
+      const Vector12d e = model.Gather(element, state.q);
+      const Vector12d e_dot = model.Gather(element, state.v);
+      // The last element also draws its end node; the others leave it to the next element.
+      const int last = k + 1 == cable.num_elements ? points_per_element_ : points_per_element_ - 1;
+      for (int i = 0; i <= last; ++i) {
+        const double xi = static_cast<double>(i) / points_per_element_;
+        const HermiteShape shape = CalcHermiteShape(xi, p.length);
+        const CableStrain strain = CalcCableStrain(p, e, xi);
+        const double tension = (p.tension_only && strain.axial < 0.0)
+                                   ? 0.0
+                                   : p.axial_stiffness * strain.axial;
+        samples_.push_back({InterpolatePosition(e, shape.s), InterpolatePosition(e_dot, shape.s),
+                            strain.axial, strain.curvature, tension});
+      }
+    }
+  }
+}
+
+std::string VtkSeriesWriter::FormatPolyData(const Model& model) const {
+  const auto write_vector = [](const Vector3d& v, auto it) {
+    fmt::format_to(it, "{} {} {}", v.x(), v.y(), v.z());
+  };
+  std::string out;
+  auto it = std::back_inserter(out);
+  out += "<?xml version=\"1.0\"?>\n"
+         "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
+         "header_type=\"UInt64\">\n"
+         "  <PolyData>\n";
+  fmt::format_to(it,
+                 "    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"0\" NumberOfLines=\"{}\" "
+                 "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n",
+                 samples_.size(), model.cables().size());
+
+  out += "      <PointData Scalars=\"tension\" Vectors=\"velocity\">\n";
+  AppendDataArray(&out, "velocity", 3, samples_,
+                  [&](const Sample& s, auto o) { write_vector(s.velocity, o); });
+  AppendDataArray(&out, "axial_strain", 1, samples_,
+                  [](const Sample& s, auto o) { fmt::format_to(o, "{}", s.axial_strain); });
+  AppendDataArray(&out, "curvature", 1, samples_,
+                  [](const Sample& s, auto o) { fmt::format_to(o, "{}", s.curvature); });
+  AppendDataArray(&out, "tension", 1, samples_,
+                  [](const Sample& s, auto o) { fmt::format_to(o, "{}", s.tension); });
+  out += "      </PointData>\n      <Points>\n";
+  AppendDataArray(&out, "position", 3, samples_,
+                  [&](const Sample& s, auto o) { write_vector(s.position, o); });
+  out += "      </Points>\n      <Lines>\n";
+
+  // One polyline per cable over consecutive point indices.
+  out += "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+  for (std::size_t i = 0; i < samples_.size(); ++i)
+    fmt::format_to(it, "{}{}", i % 16 == 0 ? "          " : " ", i);
+  out += "\n        </DataArray>\n"
+         "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n         ";
+  Index offset = 0;
+  for (const Cable& cable : model.cables()) {
+    offset += cable.num_elements * points_per_element_ + 1;
+    fmt::format_to(it, " {}", offset);
+  }
+  out += "\n        </DataArray>\n"
+         "      </Lines>\n"
+         "    </Piece>\n"
+         "  </PolyData>\n"
+         "</VTKFile>\n";
+  return out;
+}
+
+void VtkSeriesWriter::WriteCollection() const {
+  std::string out =
+      "<?xml version=\"1.0\"?>\n"
+      "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+      "  <Collection>\n";
+  for (const Frame& frame : frames_) {
+    fmt::format_to(std::back_inserter(out),
+                   "    <DataSet timestep=\"{}\" group=\"\" part=\"0\" file=\"{}\"/>\n",
+                   frame.time, frame.file_name);
+  }
+  out += "  </Collection>\n</VTKFile>\n";
+  // Write beside the collection and rename, so a reader never sees a half-written file.
+  const std::filesystem::path path = collection_path();
+  std::filesystem::path temporary = path;
+  temporary += ".tmp";
+  WriteTextFile(temporary, out);
+  std::error_code error;
+  std::filesystem::rename(temporary, path, error);
+  if (error) throw InputError(fmt::format("cannot write {}", path.string()));
+}
+
+}  // namespace ancfnet

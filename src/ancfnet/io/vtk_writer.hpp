@@ -1,0 +1,67 @@
+#pragma once
+/// @file VtkSeriesWriter: the deformed cables as a series of VTK PolyData files for ParaView.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "ancfnet/model/model.hpp"
+#include "ancfnet/state/state.hpp"
+
+namespace ancfnet {
+
+/// Writes one VTK XML PolyData file (ASCII) per frame, `DIR/BASE_NNNNNN.vtp` (frames numbered
+/// from 0), and keeps `DIR/BASE.pvd`, a VTK Collection listing every frame with its time, valid
+/// after each frame (it is rewritten through a temporary file and a rename).
+///
+/// Each cable is one polyline along the deformed ANCF centre line r(ξ) = S(ξ) e, sampled at
+/// `points_per_element` equal steps of ξ per element; the node shared by two elements appears
+/// once, so a cable of n elements has n · points_per_element + 1 points. Point data:
+///  - `velocity` ṙ(ξ) = S(ξ) ė (m/s), 3 components;
+///  - `axial_strain` ε = (r'·r' − 1)/2 and `curvature` κ (1/m), from CalcCableStrain;
+///  - `tension` N = EA ε (N), or 0 where a tension-only cable is in compression (elastic part
+///    only: Kelvin–Voigt damping forces are not included).
+class VtkSeriesWriter {
+ public:
+  /// Creates `directory` when missing. `base_name` names the files; `points_per_element` ≥ 1.
+  /// Throws InputError when the directory cannot be created or points_per_element < 1.
+  VtkSeriesWriter(const std::filesystem::path& directory, const std::string& base_name,
+                  int points_per_element);
+
+  /// Writes the next frame of `state` (time state.t) and rewrites the collection. Throws
+  /// InputError "cannot write FILE" when a file cannot be written.
+  void WriteFrame(const Model& model, const State& state);
+
+  /// Number of frames written so far.
+  int num_frames() const { return static_cast<int>(frames_.size()); }
+  /// The .pvd collection file.
+  std::filesystem::path collection_path() const { return directory_ / (base_name_ + ".pvd"); }
+  /// The .vtp file of frame `index` (written or not).
+  std::filesystem::path FramePath(int index) const;
+
+ private:
+  // Values at one sample point of the centre line.
+  struct Sample {
+    Vector3d position;
+    Vector3d velocity;
+    double axial_strain;
+    double curvature;
+    double tension;
+  };
+  struct Frame {
+    double time;
+    std::string file_name;
+  };
+
+  void CollectSamples(const Model& model, const State& state);
+  std::string FormatPolyData(const Model& model) const;
+  void WriteCollection() const;
+
+  std::filesystem::path directory_;
+  std::string base_name_;
+  int points_per_element_;
+  std::vector<Sample> samples_;  // all cables, cable after cable; reused between frames
+  std::vector<Frame> frames_;
+};
+
+}  // namespace ancfnet

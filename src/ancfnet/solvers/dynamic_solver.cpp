@@ -1,0 +1,90 @@
+#include "ancfnet/solvers/dynamic_solver.hpp"
+
+#include <cmath>
+#include <fmt/format.h>
+
+#include "ancfnet/analysis/energy_tracker.hpp"
+#include "ancfnet/integrators/explicit_verlet.hpp"
+#include "ancfnet/integrators/generalized_alpha.hpp"
+
+namespace ancfnet {
+namespace {
+
+// Accepted steps in a row before a reduced step may grow again.
+constexpr int kStepsBeforeGrowth = 4;
+
+template <class Integrator>
+SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings,
+                        double output_interval, const OutputCallback& output,
+                        Integrator& integrator, State* state) {
+  SolveResult result;
+  if (!integrator.Initialize(state)) {
+    result.completed = false;
+    result.message = "the mass matrix is singular";
+    return result;
+  }
+  EnergyTracker energy(model, integrator.workspace(), state->q);
+  energy.Advance(model, integrator.workspace(), state->q, state->v, 1.0);
+  output(*state, energy.account());
+
+  const double nominal = settings.time_step;
+  const double min_step =
+      settings.min_time_step > 0.0 ? settings.min_time_step : nominal / 1024.0;
+  const double end = settings.end_time;
+  const double time_eps = 1e-9 * nominal;
+  double step = nominal;
+  double next_output = state->t + (output_interval > 0.0 ? output_interval : 0.0);
+  int accepted_in_a_row = 0;
+  while (state->t < end - time_eps) {
+    double h = std::min(step, end - state->t);
+    if (output_interval > 0.0) h = std::min(h, next_output - state->t);
+    const StepOutcome outcome = integrator.Step(h, state);
+    result.statistics.newton_iterations += outcome.newton_iterations;
+    result.statistics.jacobian_updates += outcome.jacobian_updates;
+    if (!outcome.accepted) {
+      ++result.statistics.step_cuts;
+      accepted_in_a_row = 0;
+      step = 0.5 * h;
+      if (step < min_step) {
+        result.completed = false;
+        result.message = fmt::format(
+            "time step failed at t = {:.9g} s even with h = {:.3g} s (minimum {:.3g} s): {}",
+            state->t, h, min_step, outcome.failure);
+        return result;
+      }
+      continue;
+    }
+    ++result.statistics.steps;
+    energy.Advance(model, integrator.workspace(), state->q, state->v, 1.0);
+    if (++accepted_in_a_row >= kStepsBeforeGrowth && step < nominal) {
+      step = std::min(2.0 * step, nominal);
+      accepted_in_a_row = 0;
+    }
+    const bool at_output = output_interval <= 0.0 || state->t >= next_output - time_eps ||
+                           state->t >= end - time_eps;
+    if (at_output) {
+      output(*state, energy.account());
+      if (output_interval > 0.0)
+        while (next_output <= state->t + time_eps) next_output += output_interval;
+    }
+  }
+  return result;
+}
+
+}  // namespace
+
+SolveResult SolveDynamic(const Model& model, const DynamicSettings& settings,
+                         double output_interval, const OutputCallback& output, State* state) {
+  switch (settings.integrator) {
+    case IntegratorType::kExplicitVerlet: {
+      ExplicitVerletIntegrator integrator(model);
+      return RunTimeLoop(model, settings, output_interval, output, integrator, state);
+    }
+    case IntegratorType::kGeneralizedAlpha:
+      break;
+  }
+  GeneralizedAlphaIntegrator integrator(model, settings);
+  return RunTimeLoop(model, settings, output_interval, output, integrator, state);
+}
+
+}  // namespace ancfnet
