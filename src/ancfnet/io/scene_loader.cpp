@@ -68,9 +68,10 @@ Section ReadSection(const YamlValue& value) {
 template <typename T, typename Read>
 NamedList<T> ReadNamed(const YamlMap& scene, std::string_view key, Read read) {
   NamedList<T> list;
-  if (const std::optional<YamlValue> value = scene.Find(key))
-    for (const YamlMap::Entry& entry : value->AsMap().entries())
-      list.emplace_back(entry.key, read(entry.value));
+  const std::optional<YamlValue> value = scene.Find(key);
+  if (!value) return list;
+  const YamlMap map = value->AsMap();
+  for (const YamlMap::Entry& entry : map.entries()) list.emplace_back(entry.key, read(entry.value));
   return list;
 }
 

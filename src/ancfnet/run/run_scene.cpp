@@ -1,0 +1,92 @@
+#include "ancfnet/run/run_scene.hpp"
+
+#include <fmt/format.h>
+
+#include <memory>
+
+#include "ancfnet/common/error.hpp"
+#include "ancfnet/io/probe_csv_writer.hpp"
+#include "ancfnet/io/vtk_writer.hpp"
+#include "ancfnet/run/progress_reporter.hpp"
+#include "ancfnet/solvers/dynamic_solver.hpp"
+#include "ancfnet/solvers/static_solver.hpp"
+
+namespace ancfnet {
+namespace {
+
+// Probe rows and VTK frames for every output step.
+class OutputWriters {
+ public:
+  OutputWriters(const Scene& scene, const std::filesystem::path& dir)
+      : scene_(scene), csv_(dir / "probes.csv", scene.probes) {
+    if (scene.output.write_vtk)
+      vtk_ = std::make_unique<VtkSeriesWriter>(dir, "cables",
+                                               scene.output.vtk_points_per_element);
+  }
+  void Write(const State& state, const EnergyAccount& energy) {
+    csv_.Append(scene_.model, state, energy);
+    if (vtk_) vtk_->WriteFrame(scene_.model, state);
+    last_energy_ = energy;
+  }
+  const EnergyAccount& last_energy() const { return last_energy_; }
+
+ private:
+  const Scene& scene_;
+  ProbeCsvWriter csv_;
+  std::unique_ptr<VtkSeriesWriter> vtk_;
+  EnergyAccount last_energy_;
+};
+
+}  // namespace
+
+RunSummary RunScene(const Scene& scene, const RunOptions& options) {
+  std::error_code error;
+  std::filesystem::create_directories(options.output_dir, error);
+  if (error)
+    throw InputError(fmt::format("cannot create output directory '{}': {}",
+                                 options.output_dir.string(), error.message()));
+  const AnalysisType type = options.analysis_type.value_or(scene.analysis.type);
+  const bool is_static = type == AnalysisType::kStatic;
+  OutputWriters writers(scene, options.output_dir);
+  ProgressReporter progress(is_static ? "load factor" : "t =",
+                            is_static ? 1.0 : scene.analysis.dynamics.end_time,
+                            options.show_progress);
+
+  State state = MakeInitialState(scene.model);
+  State last_written = state;
+  long outputs = 0;
+  const OutputCallback output = [&](const State& s, const EnergyAccount& energy) {
+    writers.Write(s, energy);
+    last_written = s;
+    ++outputs;
+    progress.Update(s.t, outputs);
+  };
+
+  RunSummary summary;
+  summary.analysis = is_static ? "static" : "dynamic";
+  SolveResult result;
+  try {
+    result = is_static ? SolveStatic(scene.model, scene.analysis.statics, output, &state)
+                       : SolveDynamic(scene.model, scene.analysis.dynamics,
+                                      scene.output.interval, output, &state);
+  } catch (const SolverError& e) {  // a non-finite output value
+    result.completed = false;
+    result.message = fmt::format("stopped at t = {:.9g}: {}", e.time(), e.what());
+  }
+  progress.Finish();
+  summary.completed = result.completed;
+  summary.message = result.message;
+  summary.end_time = last_written.t;
+  summary.steps = result.statistics.steps;
+  summary.newton_iterations = result.statistics.newton_iterations;
+  summary.jacobian_updates = result.statistics.jacobian_updates;
+  summary.step_cuts = result.statistics.step_cuts;
+  summary.wall_time_s = progress.elapsed_s();
+  summary.energy = writers.last_energy();
+  // Final values are those of the last state written, which is always finite.
+  WriteSummaryJson(options.output_dir / "summary.json", summary, scene.probes, scene.model,
+                   last_written);
+  return summary;
+}
+
+}  // namespace ancfnet

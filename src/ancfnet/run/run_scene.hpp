@@ -1,0 +1,26 @@
+#pragma once
+/// @file Runs a scene: the analysis it asks for, with its outputs written into a directory.
+
+#include <filesystem>
+#include <optional>
+
+#include "ancfnet/io/scene.hpp"
+#include "ancfnet/io/summary_writer.hpp"
+
+namespace ancfnet {
+
+struct RunOptions {
+  std::filesystem::path output_dir;
+  /// Overrides scene.analysis.type (the CLI's `static` subcommand).
+  std::optional<AnalysisType> analysis_type;
+  bool show_progress = true;
+};
+
+/// Runs the analysis and writes into options.output_dir: probes.csv (one row per output step),
+/// cables_NNNNNN.vtp frames with cables.pvd, and summary.json. A solver failure does not throw:
+/// the outputs written so far are kept, summary.json says "failed" with the time and the reason,
+/// and the returned summary has completed == false. Throws InputError when the directory cannot
+/// be written.
+RunSummary RunScene(const Scene& scene, const RunOptions& options);
+
+}  // namespace ancfnet
