@@ -17,7 +17,11 @@ void ReadNewtonSettings(const YamlMap& map, NewtonSettings* newton) {
 void ReadStaticSettings(const YamlMap& map, StaticSettings* statics) {
   if (auto v = map.Find("load_steps")) statics->load_steps = v->AsInt(1);
   if (auto v = map.Find("max_step_cuts")) statics->max_step_cuts = v->AsInt(0);
-  if (auto v = map.Find("line_search")) statics->line_search = v->AsBool();
+  if (auto v = map.Find("line_search")) {
+    statics->line_search = v->AsEnum<LineSearchMode>({{"auto", LineSearchMode::kAuto},
+                                                       {"always", LineSearchMode::kAlways},
+                                                       {"never", LineSearchMode::kNever}});
+  }
   ReadNewtonSettings(map, &statics->newton);
 }
 

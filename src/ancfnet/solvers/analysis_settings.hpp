@@ -31,10 +31,17 @@ struct DynamicSettings {
   NewtonSettings newton;
 };
 
+/// When the static solver damps Newton steps (Deuflhard's natural monotonicity test).
+enum class LineSearchMode {
+  kAuto,    ///< plain Newton first; an increment it fails on is retried damped before a cut
+  kAlways,  ///< every step damped when it does not contract
+  kNever,   ///< plain Newton; failures go straight to step cutting
+};
+
 struct StaticSettings {
   int load_steps = 1;      ///< equal load increments to reach the full load, ≥ 1
   int max_step_cuts = 12;  ///< halvings of a load increment before giving up
-  bool line_search = true;
+  LineSearchMode line_search = LineSearchMode::kAuto;
   NewtonSettings newton{.max_iterations = 40};
 };
 

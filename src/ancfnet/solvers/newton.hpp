@@ -35,6 +35,8 @@ class NewtonSolver {
   template <class Problem>
   NewtonResult Solve(Problem& problem);
 
+  void set_line_search(bool line_search) { line_search_ = line_search; }
+
   /// Marks the stored factorisation as stale (e.g. after a change of time step).
   void InvalidateJacobian() { jacobian_fresh_ = false; has_factorization_ = false; }
 

@@ -66,7 +66,8 @@ SolveResult SolveStatic(const Model& model, const StaticSettings& settings,
   output(*state, energy.account());
 
   LoadIncrement increment(model, settings.newton, ws, *state);
-  NewtonSolver newton(settings.newton, JacobianUpdate::kEveryIteration, settings.line_search);
+  const bool always_damped = settings.line_search == LineSearchMode::kAlways;
+  NewtonSolver newton(settings.newton, JacobianUpdate::kEveryIteration, always_damped);
   SolveResult result;
   const double nominal = 1.0 / settings.load_steps;
   double load_factor = 0.0;
@@ -75,9 +76,18 @@ SolveResult SolveStatic(const Model& model, const StaticSettings& settings,
   while (load_factor < 1.0 - 1e-12) {
     const double target = std::min(load_factor + step, 1.0);
     increment.Begin(target);
-    const NewtonResult newton_result = newton.Solve(increment);
+    NewtonResult newton_result = newton.Solve(increment);
     result.statistics.newton_iterations += newton_result.iterations;
     result.statistics.jacobian_updates += newton_result.jacobian_updates;
+    if (!newton_result.converged && settings.line_search == LineSearchMode::kAuto) {
+      // Plain Newton is fastest when it converges; damping is the fallback before a cut.
+      increment.Reset();
+      newton.set_line_search(true);
+      newton_result = newton.Solve(increment);
+      newton.set_line_search(false);
+      result.statistics.newton_iterations += newton_result.iterations;
+      result.statistics.jacobian_updates += newton_result.jacobian_updates;
+    }
     if (!newton_result.converged) {
       increment.Reset();
       if (++cuts_in_a_row > settings.max_step_cuts) {

@@ -140,7 +140,7 @@ TEST(SceneLoaderTest, DynamicVariantHasItsSettings) {
 TEST(SceneLoaderTest, ReadsEveryAnalysisAndOutputKey) {
   const Scene scene = ParseScene(Cantilever("  load_steps: 10\n", R"(  load_steps: 4
   max_step_cuts: 0
-  line_search: false
+  line_search: never
   integrator: explicit_verlet
   spectral_radius: 0
   time_step: 2.0e-4
@@ -156,7 +156,7 @@ output: {interval: 0.01, vtk: false, vtk_points_per_element: 2}
   EXPECT_EQ(a.type, AnalysisType::kStatic);
   EXPECT_EQ(a.statics.load_steps, 4);
   EXPECT_EQ(a.statics.max_step_cuts, 0);
-  EXPECT_FALSE(a.statics.line_search);
+  EXPECT_EQ(a.statics.line_search, LineSearchMode::kNever);
   EXPECT_EQ(a.dynamics.integrator, IntegratorType::kExplicitVerlet);
   EXPECT_DOUBLE_EQ(a.dynamics.spectral_radius, 0.0);
   EXPECT_DOUBLE_EQ(a.dynamics.time_step, 2e-4);
