@@ -74,7 +74,7 @@ void AddBendingTerms(const CableElementParameters& p, const Matrix34d& e, const 
   const Vector3d a = e * ds;
   const Vector3d b = e * dds;
   const double g = a.squaredNorm();
-  const double h = std::pow(g, -1.5);
+  const double h = 1.0 / (g * std::sqrt(g));  // g^{-3/2}
   const Vector3d c = a.cross(b);
   const Vector3d k = h * c;
   const Vector12d da = DistributeForce(ds, a);          // ∂g/∂e / 2
@@ -154,7 +154,8 @@ CableStrain CalcCableStrain(const CableElementParameters& p, const Vector12d& e,
   const Vector3d b = e_mat * shape.dds;
   CableStrain strain;
   strain.axial = 0.5 * (a.squaredNorm() - 1.0);
-  strain.curvature = a.cross(b).norm() / std::pow(a.squaredNorm(), 1.5);
+  const double g = a.squaredNorm();
+  strain.curvature = a.cross(b).norm() / (g * std::sqrt(g));
   return strain;
 }
 

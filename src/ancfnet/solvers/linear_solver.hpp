@@ -9,7 +9,7 @@
 namespace ancfnet {
 
 enum class LinearSolverType {
-  kKlu,       ///< SuiteSparse KLU (through Eigen's KLUSupport); fast for banded cable systems
+  kKlu,       ///< SuiteSparse KLU, pivot order reused by refactorisation; fast for banded systems
   kSparseLu,  ///< Eigen's supernodal SparseLU
 };
 
