@@ -3,6 +3,9 @@
 #include <cmath>
 #include <limits>
 
+#include <Eigen/Eigenvalues>
+#include <fmt/format.h>
+
 namespace ancfnet {
 
 ExplicitVerletIntegrator::ExplicitVerletIntegrator(const Model& model)
@@ -20,7 +23,8 @@ void ExplicitVerletIntegrator::CalcAcceleration(const VectorXd& q, const VectorX
                                                 VectorXd* a) {
   CalcInternalForces(model_, q, v, ws_);
   CalcExternalForces(model_, q, 1.0, ws_);
-  dofs_.Restrict(ws_.external_force - ws_.internal_force, &rhs_);
+  net_force_ = ws_.external_force - ws_.internal_force;
+  dofs_.Restrict(net_force_, &rhs_);
   mass_solver_.Solve(rhs_, &a_free_);
   a->setZero();
   dofs_.AddExpanded(a_free_, 1.0, a);
@@ -38,7 +42,9 @@ StepOutcome ExplicitVerletIntegrator::Step(double h, State* state) {
   if (!state->q.allFinite() || !state->v.allFinite()) {
     *state = previous_;
     outcome.accepted = false;
-    outcome.failure = "non-finite state (explicit step above the stability limit?)";
+    outcome.failure = fmt::format(
+        "non-finite state: is h = {:.3g} s above the stability limit (about {:.3g} s)?", h,
+        EstimateCriticalStep(state->q));
     return outcome;
   }
   // Viscous forces for the energy account at the full-step velocity.
@@ -46,14 +52,22 @@ StepOutcome ExplicitVerletIntegrator::Step(double h, State* state) {
   return outcome;
 }
 
-double ExplicitVerletIntegrator::EstimateCriticalStep() const {
-  double critical = std::numeric_limits<double>::infinity();
-  for (const CableElement& element : model_.elements()) {
-    const CableElementParameters& p = element.parameters;
-    const double wave_speed = std::sqrt(p.axial_stiffness / p.mass_per_length);
-    critical = std::min(critical, p.length / wave_speed);
+double ExplicitVerletIntegrator::EstimateCriticalStep(const VectorXd& q) const {
+  double omega_max_squared = 0.0;
+  Matrix12d stiffness;
+  const Vector12d no_velocity = Vector12d::Zero();
+  for (std::size_t i = 0; i < model_.elements().size(); ++i) {
+    const CableElement& element = model_.elements()[i];
+    const Vector12d e = model_.Gather(element, q);
+    CalcCableInternalForce(element.parameters, e, no_velocity, {.stiffness = &stiffness});
+    // Symmetric part: the tangent of a conservative element is symmetric up to round-off.
+    const Matrix12d k = 0.5 * (stiffness + stiffness.transpose());
+    const Eigen::GeneralizedSelfAdjointEigenSolver<Matrix12d> eigen(
+        k, ws_.element_mass[i], Eigen::EigenvaluesOnly);
+    omega_max_squared = std::max(omega_max_squared, eigen.eigenvalues().maxCoeff());
   }
-  return critical;
+  return omega_max_squared > 0.0 ? 2.0 / std::sqrt(omega_max_squared)
+                                 : std::numeric_limits<double>::infinity();
 }
 
 }  // namespace ancfnet

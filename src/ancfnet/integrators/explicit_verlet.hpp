@@ -1,6 +1,6 @@
 #pragma once
 /// @file Explicit velocity Verlet (kick–drift–kick) with the constant mass matrix factorised
-/// once; for comparison with generalised-α. Conditionally stable: h ≲ L_e / √(EA/ρA).
+/// once; for comparison with generalised-α. Conditionally stable: h < 2/ω_max.
 
 #include "ancfnet/assembly/forces.hpp"
 #include "ancfnet/integrators/step_outcome.hpp"
@@ -21,8 +21,10 @@ class ExplicitVerletIntegrator {
   /// Rejected, with the state unchanged, when the result is not finite.
   StepOutcome Step(double h, State* state);
   const Workspace& workspace() const { return ws_; }
-  /// Estimate of the largest stable step: min over elements of L_e / √(EA/ρA) (s).
-  double EstimateCriticalStep() const;
+  /// Largest stable step 2/ω_max for small motions about the configuration q (s), with ω_max
+  /// bounded from above by the largest element frequency (Irons & Treharne 1971), so the
+  /// estimate is on the safe side.
+  double EstimateCriticalStep(const VectorXd& q) const;
 
  private:
   void CalcAcceleration(const VectorXd& q, const VectorXd& v, VectorXd* a);
@@ -31,6 +33,7 @@ class ExplicitVerletIntegrator {
   Workspace ws_;
   DofMap dofs_;
   SparseLinearSolver mass_solver_;
+  VectorXd net_force_;  // Q_ext − Q_int, all coordinates
   VectorXd rhs_;
   VectorXd a_free_;
   State previous_;

@@ -1,0 +1,77 @@
+// Stability limit of the explicit Verlet integrator: the estimate 2/ω_max from element
+// frequencies must be safe (at or below the true limit of the assembled system) without being
+// far too conservative, and the integrator must be stable just below the true limit and
+// unstable just above it (central-difference limit ω_max h = 2).
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+
+#include "ancfnet/integrators/explicit_verlet.hpp"
+#include "ancfnet/model/model_builder.hpp"
+
+namespace ancfnet {
+namespace {
+
+// Steel cantilever, 8 elements, no loads.
+Model MakeUnloadedCantilever() {
+  ModelBuilder builder;
+  builder.AddCable({.name = "beam",
+                    .start = Vector3d::Zero(),
+                    .end = Vector3d(1.0, 0.0, 0.0),
+                    .num_elements = 8,
+                    .properties = MakeCableProperties({.youngs_modulus = 2.0e11, .density = 7800.0},
+                                                      MakeRectangleSection(0.01, 0.01))});
+  builder.AddClamp({"beam", 0.0});
+  return builder.Build();
+}
+
+// 2/ω_max of the assembled, constrained system linearised at q.
+double GlobalCriticalStep(const Model& model, const VectorXd& q) {
+  const DofMap dofs = DofMap::FreeCoordinates(model);
+  Workspace ws(model);
+  SystemMatrix stiffness(model, dofs);
+  SystemMatrix mass(model, dofs);
+  AssembleIterationMatrix(model, q, VectorXd::Zero(q.size()), {.stiffness = 1.0}, 1.0, ws,
+                          &stiffness);
+  AssembleMassMatrix(model, ws, &mass);
+  const MatrixXd k = MatrixXd(stiffness.matrix());
+  const Eigen::GeneralizedSelfAdjointEigenSolver<MatrixXd> eigen(
+      0.5 * (k + k.transpose()), MatrixXd(mass.matrix()), Eigen::EigenvaluesOnly);
+  return 2.0 / std::sqrt(eigen.eigenvalues().maxCoeff());
+}
+
+// Largest speed reached in `steps` Verlet steps of size h from a tiny velocity perturbation.
+double MaxSpeedAfterSteps(const Model& model, double h, int steps) {
+  ExplicitVerletIntegrator integrator(model);
+  State state = MakeInitialState(model);
+  const DofMap dofs = DofMap::FreeCoordinates(model);
+  for (Index i = 0; i < dofs.num_unknowns(); ++i)
+    state.v[dofs.coordinates()[i]] = 1e-6 * std::sin(1.0 + 7.0 * i);
+  EXPECT_TRUE(integrator.Initialize(&state));
+  double max_speed = 0.0;
+  for (int i = 0; i < steps; ++i) {
+    if (!integrator.Step(h, &state).accepted) return std::numeric_limits<double>::infinity();
+    max_speed = std::max(max_speed, state.v.cwiseAbs().maxCoeff());
+  }
+  return max_speed;
+}
+
+TEST(ExplicitVerletTest, CriticalStepEstimateIsSafeAndNotFarTooConservative) {
+  const Model model = MakeUnloadedCantilever();
+  const State state = MakeInitialState(model);
+  const double estimate = ExplicitVerletIntegrator(model).EstimateCriticalStep(state.q);
+  const double exact = GlobalCriticalStep(model, state.q);
+  EXPECT_LE(estimate, exact * (1.0 + 1e-9));
+  EXPECT_GE(estimate, 0.5 * exact);
+}
+
+TEST(ExplicitVerletTest, StableJustBelowTheLimitAndUnstableJustAbove) {
+  const Model model = MakeUnloadedCantilever();
+  const double exact = GlobalCriticalStep(model, MakeInitialState(model).q);
+  EXPECT_LT(MaxSpeedAfterSteps(model, 0.98 * exact, 3000), 1e-4);
+  EXPECT_GT(MaxSpeedAfterSteps(model, 1.02 * exact, 3000), 1.0);
+}
+
+}  // namespace
+}  // namespace ancfnet

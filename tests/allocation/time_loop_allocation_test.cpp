@@ -1,0 +1,126 @@
+// The time loop allocates nothing: after the first step (which sizes the workspaces and factorises
+// the iteration matrix), steps of either integrator, Jacobian refreshes, changes of step size and
+// the energy accounting must not reach the heap. Every heap request of the process is counted by
+// interposing glibc's malloc family, which Eigen, KLU and operator new all end in.
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cstddef>
+#include <cstdlib>
+
+#include "ancfnet/analysis/energy_tracker.hpp"
+#include "ancfnet/integrators/explicit_verlet.hpp"
+#include "ancfnet/integrators/generalized_alpha.hpp"
+#include "../verification/verification_scenes.hpp"
+
+extern "C" {
+void* __libc_malloc(std::size_t size);
+void* __libc_calloc(std::size_t count, std::size_t size);
+void* __libc_realloc(void* pointer, std::size_t size);
+void* __libc_memalign(std::size_t alignment, std::size_t size);
+}
+
+namespace {
+std::atomic<bool> counting{false};
+std::atomic<long> allocations{0};
+void Count() {
+  if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1);
+}
+}  // namespace
+
+extern "C" {
+void* malloc(std::size_t size) {
+  Count();
+  return __libc_malloc(size);
+}
+void* calloc(std::size_t count, std::size_t size) {
+  Count();
+  return __libc_calloc(count, size);
+}
+void* realloc(void* pointer, std::size_t size) {
+  Count();
+  return __libc_realloc(pointer, size);
+}
+void* aligned_alloc(std::size_t alignment, std::size_t size) {
+  Count();
+  return __libc_memalign(alignment, size);
+}
+int posix_memalign(void** pointer, std::size_t alignment, std::size_t size) {
+  Count();
+  *pointer = __libc_memalign(alignment, size);
+  return *pointer ? 0 : ENOMEM;
+}
+}
+
+namespace ancfnet {
+namespace {
+
+// Heap requests made while `body` runs.
+template <class Body>
+long CountAllocations(Body body) {
+  allocations = 0;
+  counting = true;
+  body();
+  counting = false;
+  return allocations.load();
+}
+
+TEST(TimeLoopAllocation, CounterSeesHeapRequests) {
+  // Guards the test itself: were the interposition lost, every other case would pass vacuously.
+  const long count = CountAllocations([] {
+    VectorXd v(1000);
+    v.setOnes();
+    EXPECT_EQ(v.sum(), 1000.0);
+  });
+  EXPECT_GE(count, 1);
+}
+
+// Damped pendulum (Kelvin–Voigt on) so that viscous forces and their Jacobian are exercised;
+// 128 elements so that force assembly runs its OpenMP loop.
+void ExpectGeneralizedAlphaLoopAllocatesNothing(JacobianUpdate update, int elements) {
+  const Model model = verification::MakePendulum(elements, 1e-3);
+  DynamicSettings settings;
+  settings.jacobian_update = update;
+  GeneralizedAlphaIntegrator integrator(model, settings);
+  State state = MakeInitialState(model);
+  ASSERT_TRUE(integrator.Initialize(&state));
+  EnergyTracker energy(model, integrator.workspace(), state.q);
+  ASSERT_TRUE(integrator.Step(1e-3, &state).accepted);  // warm-up: sizes and first factorisation
+
+  int rejected = 0;
+  const long count = CountAllocations([&] {
+    for (int i = 0; i < 40; ++i) {
+      const double h = i % 10 < 5 ? 1e-3 : 5e-4;  // step-size changes force refactorisations
+      const StepOutcome outcome = integrator.Step(h, &state);
+      if (!outcome.accepted) ++rejected;
+      energy.Advance(model, integrator.workspace(), state.q, state.v, 1.0);
+    }
+  });
+  EXPECT_EQ(rejected, 0);
+  EXPECT_EQ(count, 0) << "heap requests in 40 generalised-α steps";
+}
+
+TEST(TimeLoopAllocation, GeneralizedAlphaWithAdaptiveJacobian) {
+  ExpectGeneralizedAlphaLoopAllocatesNothing(JacobianUpdate::kAdaptive, 8);
+}
+
+TEST(TimeLoopAllocation, GeneralizedAlphaWithFullNewtonAndOpenMp) {
+  ExpectGeneralizedAlphaLoopAllocatesNothing(JacobianUpdate::kEveryIteration, 128);
+}
+
+TEST(TimeLoopAllocation, ExplicitVerlet) {
+  const Model model = verification::MakePendulum(8);
+  ExplicitVerletIntegrator integrator(model);
+  State state = MakeInitialState(model);
+  ASSERT_TRUE(integrator.Initialize(&state));
+  const double h = 0.9 * integrator.EstimateCriticalStep(state.q);
+  ASSERT_TRUE(integrator.Step(h, &state).accepted);
+  const long count = CountAllocations([&] {
+    for (int i = 0; i < 40; ++i) EXPECT_TRUE(integrator.Step(h, &state).accepted);
+  });
+  EXPECT_EQ(count, 0) << "heap requests in 40 Verlet steps";
+}
+
+}  // namespace
+}  // namespace ancfnet
