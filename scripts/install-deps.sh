@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages ancfnet needs, only those missing. Idempotent and quiet when
-# everything is already there. Usage: scripts/install-deps.sh [--bench] [--plot]
+# everything is already there. Usage: scripts/install-deps.sh [--bench]
 set -euo pipefail
 
 packages=(build-essential cmake libeigen3-dev libyaml-cpp-dev libcli11-dev libfmt-dev
           nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libsuitesparse-dev
-          libomp-dev python3 python3-numpy python3-matplotlib)
+          python3 python3-numpy python3-matplotlib)
 for arg in "$@"; do
   case "$arg" in
     --bench) packages+=(hyperfine time) ;;

@@ -6,7 +6,8 @@ Usage: /usr/bin/python3 tools/plot_probes.py PROBES_CSV [-o OUTDIR]
 Reads the CSV written by ancfnet (a `time` column, then `NAME.COMPONENT` columns), and writes one
 PNG per probe, OUTDIR/NAME.png, with every component of the probe against time. Energy probes also
 get the balance kinetic + strain + gravity + dissipated - work, which stays constant in a
-consistent run. OUTDIR defaults to the folder of the CSV file. Exit code 2 for a missing or
+consistent run. Position probes also get OUTDIR/NAME_path.png, the path of the point in the plane
+of its two widest-ranging coordinates. OUTDIR defaults to the folder of the CSV file. Exit code 2 for a missing or
 empty file.
 """
 
@@ -80,6 +81,27 @@ def plot_probe(name, time, components, out_dir):
     return path
 
 
+def plot_path(name, components, out_dir):
+    """Writes OUT_DIR/NAME_path.png (the point's path, equal axes) and returns its path."""
+    ranges = {axis: np.ptp(components[axis]) for axis in "xyz"}
+    first, second = sorted(sorted(ranges, key=ranges.get, reverse=True)[:2])
+    figure, axes = plt.subplots(figsize=(6, 6))
+    axes.plot(components[first], components[second], "-")
+    axes.plot(components[first][0], components[second][0], "o", label="start")
+    axes.plot(components[first][-1], components[second][-1], "s", label="end")
+    axes.set_xlabel(f"{first} [m]")
+    axes.set_ylabel(f"{second} [m]")
+    axes.set_aspect("equal", adjustable="datalim")
+    axes.set_title(f"{name}: path")
+    axes.grid(True, alpha=0.3)
+    axes.legend(loc="best", fontsize="small")
+    figure.tight_layout()
+    path = out_dir / f"{name}_path.png"
+    figure.savefig(path, dpi=120)
+    plt.close(figure)
+    return path
+
+
 def main():
     parser = argparse.ArgumentParser(
         description="Plot the probes of an ancfnet run (one PNG each).")
@@ -93,6 +115,8 @@ def main():
     out_dir.mkdir(parents=True, exist_ok=True)
     for name, components in probes.items():
         print(plot_probe(name, time, components, out_dir))
+        if set(components) == set("xyz"):
+            print(plot_path(name, components, out_dir))
     return 0
 
 

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Checks tools/plot_probes.py on a small hand-written probe CSV: one PNG per probe, and exit code 2
+# Checks tools/plot_probes.py on a small hand-written probe CSV: one PNG per probe (and a path for
+# position probes), and exit code 2
 # for a missing or empty file.
 # Usage: bash tests/cli/plot_probes_test.sh <ancfnet binary (unused)> <repo root>
 set -euo pipefail
@@ -24,7 +25,7 @@ CSV
 
 /usr/bin/python3 "$script" "$work/probes.csv" -o "$work/plots" >"$work/stdout" ||
   fail "plot_probes.py exited with $?"
-for name in tip e; do
+for name in tip tip_path e; do
   [[ -s "$work/plots/$name.png" ]] || fail "$name.png missing or empty"
   grep -q "$name.png" "$work/stdout" || fail "$name.png not printed"
 done
