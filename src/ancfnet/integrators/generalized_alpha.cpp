@@ -30,15 +30,26 @@ class GeneralizedAlphaIntegrator::StepProblem {
 
   Index size() const { return owner_.dofs_.num_unknowns(); }
 
-  // Predictor a_{n+1} = a_n, with q and v from the update formulas.
+  // Starting guess of a_{n+1}, then q and v from the update formulas.
   void Reset() {
     const GeneralizedAlphaCoefficients& c = owner_.coefficients_;
     const State& prev = owner_.previous_;
     const VectorXd& a_bar = owner_.a_bar_;
     state_.t = prev.t + h_;
     state_.a = prev.a;
+    if (owner_.predictor_ == Predictor::kConstantPosition) {
+      // a_{n+1} such that q_{n+1} = q_n: ā_{n+1} = −(h v_n + h² (½ − β) ā_n) / (h² β).
+      for (Index i : owner_.dofs_.coordinates()) {
+        const double a_bar_next =
+            -(h_ * prev.v[i] + h_ * h_ * (0.5 - c.beta) * a_bar[i]) / (h_ * h_ * c.beta);
+        state_.a[i] = ((1.0 - c.alpha_m) * a_bar_next - c.alpha_f * prev.a[i] +
+                       c.alpha_m * a_bar[i]) / (1.0 - c.alpha_f);
+      }
+    }
     for (Index i : owner_.dofs_.coordinates()) {
-      const double a_bar_next = (prev.a[i] - c.alpha_m * a_bar[i]) / (1.0 - c.alpha_m);
+      const double a_bar_next =
+          ((1.0 - c.alpha_f) * state_.a[i] + c.alpha_f * prev.a[i] - c.alpha_m * a_bar[i]) /
+          (1.0 - c.alpha_m);
       state_.q[i] = prev.q[i] + h_ * prev.v[i] +
                     h_ * h_ * ((0.5 - c.beta) * a_bar[i] + c.beta * a_bar_next);
       state_.v[i] = prev.v[i] + h_ * ((1.0 - c.gamma) * a_bar[i] + c.gamma * a_bar_next);
@@ -124,8 +135,20 @@ StepOutcome GeneralizedAlphaIntegrator::Step(double h, State* state) {
   if (h != last_h_) newton_.InvalidateJacobian();  // the iteration matrix depends on h
   last_h_ = h;
   StepProblem problem(*this, h, *state);
+  predictor_ = Predictor::kConstantAcceleration;
   problem.Reset();
-  const NewtonResult result = newton_.Solve(problem);
+  NewtonResult result = newton_.Solve(problem);
+  if (!result.converged) {
+    // Stiff modes excited by a sudden load carry large, sign-alternating accelerations that
+    // make a_{n+1} = a_n a poor guess; q_{n+1} = q_n is close in those modes. One retry with it
+    // before the time loop has to cut the step.
+    predictor_ = Predictor::kConstantPosition;
+    problem.Reset();
+    const NewtonResult first = result;
+    result = newton_.Solve(problem);
+    result.iterations += first.iterations;
+    result.jacobian_updates += first.jacobian_updates;
+  }
   StepOutcome outcome{.accepted = result.converged,
                       .newton_iterations = result.iterations,
                       .jacobian_updates = result.jacobian_updates,

@@ -48,6 +48,9 @@ class GeneralizedAlphaIntegrator {
   NewtonSolver newton_;
   NewtonSettings newton_settings_;
   double last_h_ = 0.0;
+  // Starting guess of a step's Newton iterations: a_{n+1} = a_n first; q_{n+1} = q_n on retry.
+  enum class Predictor { kConstantAcceleration, kConstantPosition };
+  Predictor predictor_ = Predictor::kConstantAcceleration;
   VectorXd a_bar_;  // auxiliary acceleration ā_n
   State previous_;  // state at t_n while a step is attempted
   VectorXd residual_full_;
