@@ -54,6 +54,7 @@ class NewtonSolver {
   SparseLinearSolver linear_solver_;
   bool has_factorization_ = false;
   bool jacobian_fresh_ = false;  // factorised at the current iterate
+  int last_iterations_ = 0;      // iterations of the last converged solve
   VectorXd residual_;
   VectorXd increment_;
   VectorXd simplified_;

@@ -7,6 +7,8 @@ namespace ancfnet {
 
 // Smallest damping factor of a Newton step before the iterations are declared stuck.
 inline constexpr double kMinDamping = 1.0 / 256.0;
+// Iterations of a converged solve above which the next solve starts with a fresh Jacobian.
+inline constexpr int kSlowConvergenceIterations = 4;
 
 inline NewtonSolver::NewtonSolver(const NewtonSettings& settings, JacobianUpdate update,
                                   bool line_search, LinearSolverType linear_solver)
@@ -61,7 +63,10 @@ template <class Problem>
 NewtonResult NewtonSolver::Iterate(Problem& problem, bool force_refresh) {
   NewtonResult result;
   const bool every_iteration = force_refresh || update_ == JacobianUpdate::kEveryIteration;
-  const bool refresh_first = every_iteration || update_ == JacobianUpdate::kEveryStep;
+  // Adaptive reuse: an old Jacobian that needed many iterations last time is renewed at once.
+  const bool slow_last_time = last_iterations_ > kSlowConvergenceIterations;
+  const bool refresh_first =
+      every_iteration || update_ == JacobianUpdate::kEveryStep || slow_last_time;
   double previous_norm = 0.0;
   for (int it = 0; it < settings_.max_iterations; ++it) {
     result.iterations = it + 1;
@@ -99,6 +104,7 @@ NewtonResult NewtonSolver::Iterate(Problem& problem, bool force_refresh) {
     // Converged only on a full step: a small damped step says nothing about the distance left.
     if (step == 1.0 && full_norm <= 1.0) {
       result.converged = true;
+      last_iterations_ = result.iterations;
       return result;
     }
   }
