@@ -1,11 +1,14 @@
 // The ancfnet command-line tool: run, static and check a scene file.
-// Exit codes: 0 success, 2 invalid input (one line on stderr), 3 the solver gave up (outputs
-// written so far are kept and summary.json says why).
+// Exit codes: 0 success, 2 invalid input (one line on stderr; also a model too large for the
+// memory), 3 the solver gave up (outputs written so far are kept and summary.json says why),
+// 1 an unexpected internal error (a bug).
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
 #include <cstdio>
+#include <exception>
+#include <new>
 
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/io/scene_loader.hpp"
@@ -14,6 +17,7 @@
 
 namespace {
 
+constexpr int kExitInternalError = 1;
 constexpr int kExitInputError = 2;
 constexpr int kExitSolverFailure = 3;
 
@@ -29,8 +33,12 @@ int RunCommand(const std::string& scene_file, const std::string& output_dir, boo
   const ancfnet::RunSummary summary = ancfnet::RunScene(scene, options);
   if (!summary.completed) {
     fmt::print(stderr, "ancfnet: {}\n", summary.message);
-    fmt::print(stderr, "ancfnet: outputs up to t = {:.9g} kept in {}\n", summary.end_time,
-               options.output_dir.string());
+    if (summary.outputs > 0)
+      fmt::print(stderr, "ancfnet: outputs up to t = {:.9g} kept in {}\n", summary.end_time,
+                 options.output_dir.string());
+    else
+      fmt::print(stderr, "ancfnet: no output step was written; summary in {}\n",
+                 options.output_dir.string());
     return kExitSolverFailure;
   }
   if (!quiet)
@@ -77,5 +85,14 @@ int main(int argc, char** argv) {
   } catch (const ancfnet::InputError& e) {
     fmt::print(stderr, "ancfnet: {}\n", e.what());
     return kExitInputError;
+  } catch (const ancfnet::SolverError& e) {  // RunScene reports these itself; never abort
+    fmt::print(stderr, "ancfnet: stopped at t = {:.9g}: {}\n", e.time(), e.what());
+    return kExitSolverFailure;
+  } catch (const std::bad_alloc&) {
+    fmt::print(stderr, "ancfnet: out of memory: the model is too large for this machine\n");
+    return kExitInputError;
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "ancfnet: internal error: {}\n", e.what());
+    return kExitInternalError;
   }
 }

@@ -21,7 +21,7 @@ double CalcStrainEnergy(const Model& model, const VectorXd& q) {
 EnergyTracker::EnergyTracker(const Model& model, const Workspace& ws, const VectorXd& q)
     : q_(q), applied_(ws.applied_force), viscous_(ws.viscous_force) {
   account_.strain = CalcStrainEnergy(model, q);
-  account_.gravity = -ws.gravity_force.dot(q);
+  account_.gravity = 0.0 - ws.gravity_force.dot(q);  // +0, not −0, without gravity
 }
 
 void EnergyTracker::Advance(const Model& model, const Workspace& ws, const VectorXd& q,
@@ -38,7 +38,7 @@ void EnergyTracker::Advance(const Model& model, const Workspace& ws, const Vecto
   account_.dissipated += dissipated;
   account_.kinetic = CalcKineticEnergy(model, ws, v);
   account_.strain = CalcStrainEnergy(model, q);
-  account_.gravity = -load_factor * ws.gravity_force.dot(q);
+  account_.gravity = 0.0 - load_factor * ws.gravity_force.dot(q);
   q_ = q;
   applied_ = ws.applied_force;
   viscous_ = ws.viscous_force;

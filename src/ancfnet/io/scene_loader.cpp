@@ -19,6 +19,10 @@
 namespace ancfnet {
 namespace {
 
+// A bound far above any useful mesh that keeps a typo (elements: 2000000000) from exhausting the
+// memory instead of being reported.
+constexpr int kMaxElementsPerCable = 1'000'000;
+
 // Named definitions in file order (the order they are listed in messages).
 template <typename T>
 using NamedList = std::vector<std::pair<std::string, T>>;
@@ -117,7 +121,11 @@ void ReadCable(const YamlValue& item, const Library& library, ModelBuilder* buil
   spec.name = map.Get("name").AsString();
   spec.start = map.Get("start").AsVector3();
   spec.end = map.Get("end").AsVector3();
-  spec.num_elements = map.Get("elements").AsInt(1);
+  const YamlValue elements = map.Get("elements");
+  spec.num_elements = elements.AsInt(1);
+  if (spec.num_elements > kMaxElementsPerCable)
+    elements.Fail(fmt::format("too many elements: at most {} per cable, got {}",
+                              kMaxElementsPerCable, spec.num_elements));
   const Material& material = Lookup(library.materials, map.Get("material"), "material",
                                     "known materials");
   const Section& section = Lookup(library.sections, map.Get("section"), "section",

@@ -22,6 +22,7 @@ struct RunSummary {
   long newton_iterations = 0;
   long jacobian_updates = 0;
   long step_cuts = 0;
+  long outputs = 0;        ///< output steps written (rows of probes.csv)
   double wall_time_s = 0.0;  ///< s
   EnergyAccount energy;      ///< energies at the end (J)
 };

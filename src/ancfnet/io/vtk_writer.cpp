@@ -1,5 +1,6 @@
 #include "ancfnet/io/vtk_writer.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <fmt/format.h>
 #include <iterator>
@@ -56,6 +57,7 @@ std::filesystem::path VtkSeriesWriter::FramePath(int index) const {
 
 void VtkSeriesWriter::WriteFrame(const Model& model, const State& state) {
   CollectSamples(model, state);
+  CheckSamplesFinite(state.t);
   const std::filesystem::path path = FramePath(num_frames());
   WriteTextFile(path, FormatPolyData(model));
   frames_.push_back({state.t, path.filename().string()});
@@ -83,6 +85,23 @@ void VtkSeriesWriter::CollectSamples(const Model& model, const State& state) {
                             strain.axial, strain.curvature, tension});
       }
     }
+  }
+}
+
+void VtkSeriesWriter::CheckSamplesFinite(double time) const {
+  for (std::size_t i = 0; i < samples_.size(); ++i) {
+    const Sample& s = samples_[i];
+    const char* field = nullptr;
+    if (!s.position.allFinite()) {
+      field = "position";
+    } else if (!s.velocity.allFinite()) {
+      field = "velocity";
+    } else if (!std::isfinite(s.axial_strain) || !std::isfinite(s.curvature) ||
+               !std::isfinite(s.tension)) {
+      field = "strain or tension";
+    }
+    if (field != nullptr)
+      throw SolverError(fmt::format("non-finite {} at VTK sample point {}", field, i), time);
   }
 }
 

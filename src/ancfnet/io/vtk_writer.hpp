@@ -29,6 +29,7 @@ class VtkSeriesWriter {
                   int points_per_element);
 
   /// Writes the next frame of `state` (time state.t) and rewrites the collection. Throws
+  /// SolverError (at state.t), writing nothing, when a sampled value is NaN or infinite; throws
   /// InputError "cannot write FILE" when a file cannot be written.
   void WriteFrame(const Model& model, const State& state);
 
@@ -54,6 +55,8 @@ class VtkSeriesWriter {
   };
 
   void CollectSamples(const Model& model, const State& state);
+  // Throws SolverError at `time` for the first non-finite value in samples_.
+  void CheckSamplesFinite(double time) const;
   std::string FormatPolyData(const Model& model) const;
   void WriteCollection() const;
 

@@ -2,7 +2,9 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <memory>
+#include <utility>
 
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/io/probe_csv_writer.hpp"
@@ -23,14 +25,31 @@ class OutputWriters {
       vtk_ = std::make_unique<VtkSeriesWriter>(dir, "cables",
                                                scene.output.vtk_points_per_element);
   }
+  // Writes nothing and throws SolverError when a value to be written is NaN or infinite, so
+  // that the files only ever hold finite numbers. The VTK frame goes first: it checks the whole
+  // centre line, from which the probe values are interpolated, before writing anything.
   void Write(const State& state, const EnergyAccount& energy) {
-    csv_.Append(scene_.model, state, energy);
+    CheckFinite(state, energy);
     if (vtk_) vtk_->WriteFrame(scene_.model, state);
+    csv_.Append(scene_.model, state, energy);
     last_energy_ = energy;
   }
   const EnergyAccount& last_energy() const { return last_energy_; }
 
  private:
+  static void CheckFinite(const State& state, const EnergyAccount& energy) {
+    if (!std::isfinite(state.t) || !state.q.allFinite() || !state.v.allFinite())
+      throw SolverError("non-finite state (coordinates or velocities)", state.t);
+    const std::pair<const char*, double> terms[] = {{"kinetic", energy.kinetic},
+                                                    {"strain", energy.strain},
+                                                    {"gravity", energy.gravity},
+                                                    {"work", energy.work},
+                                                    {"dissipated", energy.dissipated}};
+    for (const auto& [name, value] : terms)
+      if (!std::isfinite(value))
+        throw SolverError(fmt::format("non-finite {} energy", name), state.t);
+  }
+
   const Scene& scene_;
   ProbeCsvWriter csv_;
   std::unique_ptr<VtkSeriesWriter> vtk_;
@@ -64,15 +83,10 @@ RunSummary RunScene(const Scene& scene, const RunOptions& options) {
 
   RunSummary summary;
   summary.analysis = is_static ? "static" : "dynamic";
-  SolveResult result;
-  try {
-    result = is_static ? SolveStatic(scene.model, scene.analysis.statics, output, &state)
-                       : SolveDynamic(scene.model, scene.analysis.dynamics,
-                                      scene.output.interval, output, &state);
-  } catch (const SolverError& e) {  // a non-finite output value
-    result.completed = false;
-    result.message = fmt::format("stopped at t = {:.9g}: {}", e.time(), e.what());
-  }
+  const SolveResult result =
+      is_static ? SolveStatic(scene.model, scene.analysis.statics, output, &state)
+                : SolveDynamic(scene.model, scene.analysis.dynamics, scene.output.interval,
+                               output, &state);
   progress.Finish();
   summary.completed = result.completed;
   summary.message = result.message;
@@ -81,6 +95,7 @@ RunSummary RunScene(const Scene& scene, const RunOptions& options) {
   summary.newton_iterations = result.statistics.newton_iterations;
   summary.jacobian_updates = result.statistics.jacobian_updates;
   summary.step_cuts = result.statistics.step_cuts;
+  summary.outputs = outputs;
   summary.wall_time_s = progress.elapsed_s();
   summary.energy = writers.last_energy();
   // Final values are those of the last state written, which is always finite.

@@ -25,7 +25,7 @@ SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings,
   }
   EnergyTracker energy(model, integrator.workspace(), state->q);
   energy.Advance(model, integrator.workspace(), state->q, state->v, 1.0);
-  output(*state, energy.account());
+  if (!EmitOutput(output, *state, energy.account(), &result)) return result;
 
   const double nominal = settings.time_step;
   const double min_step =
@@ -63,7 +63,7 @@ SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings,
     const bool at_output = output_interval <= 0.0 || state->t >= next_output - time_eps ||
                            state->t >= end - time_eps;
     if (at_output) {
-      output(*state, energy.account());
+      if (!EmitOutput(output, *state, energy.account(), &result)) return result;
       if (output_interval > 0.0)
         while (next_output <= state->t + time_eps) next_output += output_interval;
     }

@@ -2,7 +2,23 @@
 
 #include <cmath>
 
+#include <fmt/format.h>
+
+#include "ancfnet/common/error.hpp"
+
 namespace ancfnet {
+
+bool EmitOutput(const OutputCallback& output, const State& state, const EnergyAccount& energy,
+                SolveResult* result) {
+  try {
+    output(state, energy);
+    return true;
+  } catch (const SolverError& e) {
+    result->completed = false;
+    result->message = fmt::format("stopped at t = {:.9g}: {}", e.time(), e.what());
+    return false;
+  }
+}
 
 double WeightedRmsNorm(const VectorXd& dx, const VectorXd& x, const std::vector<Index>& coordinates,
                        double scale, double rtol, double atol) {

@@ -22,8 +22,14 @@ struct SolveResult {
   std::string message;  ///< why the analysis stopped early
 };
 
-/// Called with the state at t = 0 (load factor 0) and at every output step.
+/// Called with the state at t = 0 (load factor 0) and at every output step. It may throw
+/// SolverError when a value cannot be written (not finite): the analysis then stops.
 using OutputCallback = std::function<void(const State&, const EnergyAccount&)>;
+
+/// Calls `output`. When it throws SolverError, marks `result` failed with the reason (keeping
+/// the statistics gathered so far) and returns false: the caller must stop.
+bool EmitOutput(const OutputCallback& output, const State& state, const EnergyAccount& energy,
+                SolveResult* result);
 
 /// Weighted RMS norm √(mean_i (dx_i / (atol + rtol |x_i|))²) over the unknowns (Hairer &
 /// Wanner 1996, II.4); `coordinates` maps unknown i to its entry of x.

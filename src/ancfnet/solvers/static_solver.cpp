@@ -63,18 +63,19 @@ SolveResult SolveStatic(const Model& model, const StaticSettings& settings,
   CalcInternalForces(model, state->q, state->v, ws);
   CalcExternalForces(model, state->q, 0.0, ws);
   EnergyTracker energy(model, ws, state->q);
-  output(*state, energy.account());
+  SolveResult result;
+  if (!EmitOutput(output, *state, energy.account(), &result)) return result;
 
   LoadIncrement increment(model, settings.newton, ws, *state);
   const bool always_damped = settings.line_search == LineSearchMode::kAlways;
   NewtonSolver newton(settings.newton, JacobianUpdate::kEveryIteration, always_damped);
-  SolveResult result;
   const double nominal = 1.0 / settings.load_steps;
   double load_factor = 0.0;
   double step = nominal;
   int cuts_in_a_row = 0;
   while (load_factor < 1.0 - 1e-12) {
-    const double target = std::min(load_factor + step, 1.0);
+    // The last increment lands on λ = 1 exactly (no round-off from summing increments).
+    const double target = load_factor + step >= 1.0 - 1e-12 ? 1.0 : load_factor + step;
     increment.Begin(target);
     NewtonResult newton_result = newton.Solve(increment);
     result.statistics.newton_iterations += newton_result.iterations;
@@ -109,7 +110,7 @@ SolveResult SolveStatic(const Model& model, const StaticSettings& settings,
     CalcInternalForces(model, state->q, state->v, ws);
     CalcExternalForces(model, state->q, load_factor, ws);
     energy.Advance(model, ws, state->q, state->v, load_factor);
-    output(*state, energy.account());
+    if (!EmitOutput(output, *state, energy.account(), &result)) return result;
   }
   return result;
 }

@@ -249,6 +249,26 @@ TEST(VtkSeriesWriter, CompressedRopeCarriesNoTension) {
   for (double tension : ReadDataArray(xml, "tension")) EXPECT_EQ(tension, 0.0);
 }
 
+TEST(VtkSeriesWriter, RefusesANonFiniteFrameAndWritesNothing) {
+  const Model model = MakeModel();
+  const std::filesystem::path dir = MakeTestDirectory();
+  VtkSeriesWriter writer(dir, "cables", 2);
+  writer.WriteFrame(model, MakeDeformedState(model, 0.0));
+  State state = MakeDeformedState(model, 0.25);
+  state.v[7] = kNaN;
+  try {
+    writer.WriteFrame(model, state);
+    FAIL() << "no error";
+  } catch (const SolverError& error) {
+    EXPECT_EQ(error.time(), 0.25);
+    EXPECT_NE(std::string(error.what()).find("non-finite velocity"), std::string::npos)
+        << error.what();
+  }
+  EXPECT_EQ(writer.num_frames(), 1);
+  EXPECT_FALSE(std::filesystem::exists(writer.FramePath(1)));
+  EXPECT_EQ(ReadFile(writer.collection_path()).find("cables_000001"), std::string::npos);
+}
+
 TEST(VtkSeriesWriter, RejectsFewerThanOnePointPerElement) {
   EXPECT_THROW(VtkSeriesWriter(MakeTestDirectory(), "cables", 0), InputError);
 }

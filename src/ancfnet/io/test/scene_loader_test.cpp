@@ -342,6 +342,9 @@ const BadScene kBadScenes[] = {
      "scene.yaml:10:15: expected an integer ≥ 1, got '2.5' (key 'elements')"},
     {"ElementsZero", Cantilever("elements: 16", "elements: 0"),
      "scene.yaml:10:15: expected an integer ≥ 1, got '0' (key 'elements')"},
+    {"ElementsTooMany", Cantilever("elements: 16", "elements: 2000000000"),
+     "scene.yaml:10:15: too many elements: at most 1000000 per cable, got 2000000000 "
+     "(key 'elements')"},
     {"ElementsEmpty", Cantilever("elements: 16", "elements:"),
      "scene.yaml:10:5: expected an integer ≥ 1, got an empty value (key 'elements')"},
     {"VectorTooShort", Cantilever("start: [0, 0, 0]", "start: [0, 0]"),
