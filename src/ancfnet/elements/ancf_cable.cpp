@@ -11,6 +11,11 @@ namespace {
 using Matrix34d = Eigen::Matrix<double, 3, 4>;
 using Matrix12x3d = Eigen::Matrix<double, 12, 3>;
 
+// κ_ε L_e: curvature (times element length) below which bending damping fades out, so that the
+// damping force stays smooth through straight configurations, where the direction of κ̇ is
+// undefined. Radius of curvature 10⁴ element lengths: negligible for any real bending.
+constexpr double kCurvatureRateRegularisation = 1e-4;
+
 Matrix3d Skew(const Vector3d& v) {
   Matrix3d m;
   m << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
@@ -46,11 +51,12 @@ void AddAxialTerms(const CableElementParameters& p, const Matrix34d& e, const Ma
   const Vector3d a = e * ds;
   const Vector3d a_dot = e_dot * ds;
   const double strain = 0.5 * (a.squaredNorm() - 1.0);
-  if (p.tension_only && strain <= 0.0) return;  // a slack rope carries no axial force
   const double strain_rate = a.dot(a_dot);
   const double ea = p.axial_stiffness;
   const double viscous_n = ea * p.axial_damping_time * strain_rate;
   const double n = ea * strain + viscous_n;
+  // A rope carries no axial force while slack, and never pushes: N = max(EA (ε + τ ε̇), 0).
+  if (p.tension_only && (strain <= 0.0 || n <= 0.0)) return;
   const Vector12d de = DistributeForce(ds, a);
   if (out.force) *out.force += (weight * n) * de;
   if (out.viscous_force) *out.viscous_force += (weight * viscous_n) * de;
@@ -65,9 +71,12 @@ void AddAxialTerms(const CableElementParameters& p, const Matrix34d& e, const Ma
     out.damping->noalias() += (weight * ea * p.axial_damping_time) * de * de.transpose();
 }
 
-// Bending term at one Gauss point: EI (k + τ k̇)ᵀ ∂k/∂e with the curvature vector
-// k = h c, c = r' × r'', h = g^{-3/2}, g = r'·r' (|k| = κ, Gerstmayr & Shabana 2006, eq. 11).
-// Derivatives in docs/theory.md, "Bending: curvature vector".
+// Bending term at one Gauss point, with the curvature vector k = h c, c = r' × r'', h = g^{-3/2},
+// g = r'·r' (|k| = κ, Gerstmayr & Shabana 2006, eq. 11). Elastic part EI kᵀ ∂k/∂e. Damping from
+// the dissipation function D = ½ EI τ (k·k̇)² / (κ² + κ_ε²), which is ½ EI τ κ̇² away from the
+// regularisation κ_ε: it depends on the rate of the curvature's magnitude only, so a bent element
+// in rigid rotation (k̇ = ω × k) dissipates nothing. Its force ∂D/∂ė = EI τ (k·k̇)/(κ² + κ_ε²)
+// Jᵀ k is parallel to the elastic one. Derivatives in docs/theory.md, "Bending".
 void AddBendingTerms(const CableElementParameters& p, const Matrix34d& e, const Matrix34d& e_dot,
                      const Vector4d& ds, const Vector4d& dds, double weight,
                      const CableForceOutputs& out) {
@@ -80,23 +89,27 @@ void AddBendingTerms(const CableElementParameters& p, const Matrix34d& e, const 
   const Vector12d da = DistributeForce(ds, a);          // ∂g/∂e / 2
   const Vector12d grad_h = (-3.0 * h / g) * da;        // ∂h/∂e
   const Matrix12x3d dc_t = StackBlocks(ds, Skew(b), dds, -Skew(a));  // (∂c/∂e)ᵀ
-  const Matrix12x3d jk_t = h * dc_t + grad_h * c.transpose();         // (∂k/∂e)ᵀ
+  const Matrix12x3d jk_t = h * dc_t + grad_h * c.transpose();         // Jᵀ = (∂k/∂e)ᵀ
 
   const double ei = p.bending_stiffness;
-  const double tau = p.bending_damping_time;
-  const bool damped = tau > 0.0;
+  const double ei_tau = ei * p.bending_damping_time;
+  const bool damped = ei_tau > 0.0;
   const Vector12d e_dot_vec = Eigen::Map<const Vector12d>(e_dot.data());
   const Vector3d k_dot = damped ? Vector3d(jk_t.transpose() * e_dot_vec) : Vector3d::Zero();
-  const Vector3d viscous_m = (ei * tau) * k_dot;
-  const Vector3d m = ei * k + viscous_m;  // bending "moment" vector conjugate to k
+  const double kappa_eps = kCurvatureRateRegularisation / p.length;
+  const double d = k.squaredNorm() + kappa_eps * kappa_eps;
+  const double s = k.dot(k_dot);                 // κ κ̇
+  const double mu_viscous = ei_tau * s / d;      // viscous "moment" per unit k
+  const Vector3d m = (ei + mu_viscous) * k;      // moment vector conjugate to k
+  const Vector12d jk = jk_t * k;                 // Jᵀ k = κ ∂κ/∂e
 
   if (out.force) out.force->noalias() += weight * (jk_t * m);
-  if (out.viscous_force && damped) out.viscous_force->noalias() += weight * (jk_t * viscous_m);
-  if (out.damping && damped) out.damping->noalias() += (weight * ei * tau) * jk_t * jk_t.transpose();
+  if (out.viscous_force && damped) out.viscous_force->noalias() += (weight * mu_viscous) * jk;
+  if (out.damping && damped) out.damping->noalias() += (weight * ei_tau / d) * jk * jk.transpose();
   if (!out.stiffness) return;
 
   Matrix12d& kt = *out.stiffness;
-  kt.noalias() += (weight * ei) * jk_t * jk_t.transpose();
+  kt.noalias() += (weight * (ei + mu_viscous)) * jk_t * jk_t.transpose();
   // Σ_i m_i ∂²k_i/∂e² = h Σ m_i ∂²c_i + (∂cᵀm) ∇hᵀ + ∇h (∂cᵀm)ᵀ + (m·c) ∂²h.
   const Matrix3d m_skew = Skew(m);
   AddKronecker(dds, ds, m_skew, weight * h, kt);
@@ -108,8 +121,9 @@ void AddBendingTerms(const CableElementParameters& p, const Matrix34d& e, const 
   kt.noalias() += (mc * 15.0 * g52 / g) * da * da.transpose();
   AddKroneckerIdentity(ds, ds, -3.0 * mc * g52, kt);
   if (!damped) return;
-  // Damping force EI τ Jkᵀ k̇ depends on e also through k̇ = Jk ė: add Jkᵀ ∂k̇/∂e, where column i
-  // of (∂k̇/∂e)ᵀ is (∂²k_i/∂e²) ė = h ∂²c_i ė + ∇c_i ḣ + ∇h ċ_i + c_i ∂²h ė.
+  // The viscous moment's factor μ = EI τ s/d depends on e through s = k·k̇ (k̇ = J ė) and
+  // d: Jᵀ k (∂μ/∂e)ᵀ with ∂μ/∂e = EI τ/d (Jᵀ k̇ + (∂k̇/∂e)ᵀ k − 2 (s/d) Jᵀ k), where column i of
+  // (∂k̇/∂e)ᵀ is (∂²k_i/∂e²) ė = h ∂²c_i ė + ∇c_i ḣ + ∇h ċ_i + c_i ∂²h ė.
   const Vector3d a_dot = e_dot * ds;
   const Vector3d b_dot = e_dot * dds;
   const double a_adot = a.dot(a_dot);
@@ -120,7 +134,8 @@ void AddBendingTerms(const CableElementParameters& p, const Matrix34d& e, const 
   const Matrix12x3d hess_c_edot = StackBlocks(dds, -Skew(a_dot), ds, Skew(b_dot));
   const Matrix12x3d dk_dot_t =
       h * hess_c_edot + h_dot * dc_t + grad_h * c_dot.transpose() + hess_h_edot * c.transpose();
-  kt.noalias() += (weight * ei * tau) * jk_t * dk_dot_t.transpose();
+  const Vector12d grad_s = jk_t * k_dot + dk_dot_t * k;
+  kt.noalias() += (weight * ei_tau / d) * jk * (grad_s - (2.0 * s / d) * jk).transpose();
 }
 
 }  // namespace

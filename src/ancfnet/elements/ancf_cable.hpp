@@ -14,10 +14,11 @@ struct CableElementParameters {
   double axial_stiffness = 0.0;    ///< EA (N), > 0
   double bending_stiffness = 0.0;  ///< EI (N m²), ≥ 0
   double mass_per_length = 0.0;    ///< ρA (kg/m), > 0
-  /// Kelvin–Voigt retardation times (s), ≥ 0: N = EA (ε + τ_ε ε̇), M = EI (κ + τ_κ κ̇).
+  /// Kelvin–Voigt retardation times (s), ≥ 0: N = EA (ε + τ_ε ε̇), M = EI (κ + τ_κ κ̇) (the rate
+  /// of the curvature's magnitude, so rigid rotation dissipates nothing).
   double axial_damping_time = 0.0;
   double bending_damping_time = 0.0;
-  /// Rope law: N = EA max(ε, 0) (and no axial damping while slack). Bending still acts.
+  /// Rope law: N = EA max(ε + τ_ε ε̇, 0) while stretched, 0 while slack. Bending still acts.
   bool tension_only = false;
   /// Gauss points along the element for the axial and the bending terms (docs/theory.md says why
   /// these defaults avoid membrane locking).
@@ -34,7 +35,7 @@ struct CableForceOutputs {
 };
 
 /// Internal generalised force of the element and, when asked, its exact Jacobians:
-///   Q = ∫₀ᴸ [ N ∂ε/∂e + EI (k + τ_κ k̇)ᵀ ∂k/∂e ] dx,  N = EA (ε + τ_ε ε̇),
+///   Q = ∫₀ᴸ [ N ∂ε/∂e + EI (κ + τ_κ κ̇) ∂κ/∂e ] dx,  N = EA (ε + τ_ε ε̇),
 /// with ε = (r'·r' − 1)/2 (Gerstmayr & Shabana 2006, eq. 9) and the curvature vector
 /// k = (r' × r'') / |r'|³, |k| = κ (eq. 11). Outputs are overwritten, not accumulated.
 void CalcCableInternalForce(const CableElementParameters& p, const Vector12d& e,

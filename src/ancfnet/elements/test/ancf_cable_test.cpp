@@ -92,6 +92,18 @@ TEST(AncfCable, KelvinVoigtJacobiansMatchFiniteDifferences) {
   ExpectJacobiansMatchFiniteDifferences(p, BentElement(), Velocity());
 }
 
+TEST(AncfCable, KelvinVoigtJacobiansMatchFiniteDifferencesOnAnArc) {
+  // A plane arc bent out of its plane by the velocity: the case where the magnitude and the
+  // direction of the curvature change together.
+  CableElementParameters p = MakeParameters();
+  p.axial_damping_time = 0.01;
+  p.bending_damping_time = 0.03;
+  const double radius = 2.0 * p.length / M_PI;
+  Vector12d e;
+  e << 0, 0, 0, 1, 0, 0, radius, radius, 0, 0, 1.02, 0;
+  ExpectJacobiansMatchFiniteDifferences(p, e, Velocity());
+}
+
 TEST(AncfCable, TensionOnlyJacobiansMatchFiniteDifferences) {
   CableElementParameters p = MakeParameters();
   p.tension_only = true;
@@ -116,6 +128,28 @@ TEST(AncfCable, RigidBodyMotionGivesNoElasticForce) {
   damped.bending_damping_time = 0.05;
   EXPECT_LT(Force(damped, e, v).norm(), 1e-9 * p.axial_stiffness);
   EXPECT_NEAR(CalcCableStrainEnergy(p, e), 0.0, 1e-12);
+}
+
+TEST(AncfCable, BentElementInRigidRotationDissipatesNothing) {
+  // Bending damping acts on the rate of the curvature's magnitude: spinning a bent element
+  // (ė = ω × e for positions and slopes alike) must give no viscous force, while bending it
+  // further must.
+  CableElementParameters p = MakeParameters();
+  p.axial_damping_time = 0.05;
+  p.bending_damping_time = 0.05;
+  Vector12d e;  // a quarter-circle arc of radius R in the xy-plane, exact positions and slopes
+  const double radius = 2.0 * p.length / M_PI;
+  e << 0, 0, 0, 1, 0, 0, radius, radius, 0, 0, 1, 0;
+  const Vector3d omega(0.3, -0.8, 1.1);
+  Vector12d v;
+  for (int node = 0; node < 4; ++node) v.segment<3>(3 * node) = omega.cross(Vector3d(e.segment<3>(3 * node)));
+  Vector12d viscous, total;
+  CalcCableInternalForce(p, e, v, {.force = &total, .viscous_force = &viscous});
+  EXPECT_LT(viscous.norm(), 1e-12 * total.norm());
+  Vector12d bend = Vector12d::Zero();  // tip slope turning further: the curvature grows
+  bend.segment<3>(9) = Vector3d(-0.2, 0.0, 0.0);
+  CalcCableInternalForce(p, e, bend, {.viscous_force = &viscous});
+  EXPECT_GT(viscous.dot(bend), 0.0);  // positive dissipated power
 }
 
 TEST(AncfCable, TensionOnlyCarriesNoCompression) {
