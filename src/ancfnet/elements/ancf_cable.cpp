@@ -11,10 +11,10 @@ namespace {
 using Matrix34d = Eigen::Matrix<double, 3, 4>;
 using Matrix12x3d = Eigen::Matrix<double, 12, 3>;
 
-// κ_ε L_e: curvature (times element length) below which bending damping fades out, so that the
-// damping force stays smooth through straight configurations, where the direction of κ̇ is
-// undefined. Radius of curvature 10⁴ element lengths: negligible for any real bending.
-constexpr double kCurvatureRateRegularisation = 1e-4;
+// κ_ε L_e: curvature (times element length) around which bending damping passes from the rate of
+// the curvature vector (near straight) to the rate of its magnitude (bent). A bent element in
+// rigid rotation dissipates a fraction κ_ε²/(κ² + κ_ε²) of what the vector rate would give.
+constexpr double kCurvatureBlend = 1e-3;
 
 Matrix3d Skew(const Vector3d& v) {
   Matrix3d m;
@@ -73,10 +73,11 @@ void AddAxialTerms(const CableElementParameters& p, const Matrix34d& e, const Ma
 
 // Bending term at one Gauss point, with the curvature vector k = h c, c = r' × r'', h = g^{-3/2},
 // g = r'·r' (|k| = κ, Gerstmayr & Shabana 2006, eq. 11). Elastic part EI kᵀ ∂k/∂e. Damping from
-// the dissipation function D = ½ EI τ (k·k̇)² / (κ² + κ_ε²), which is ½ EI τ κ̇² away from the
-// regularisation κ_ε: it depends on the rate of the curvature's magnitude only, so a bent element
-// in rigid rotation (k̇ = ω × k) dissipates nothing. Its force ∂D/∂ė = EI τ (k·k̇)/(κ² + κ_ε²)
-// Jᵀ k is parallel to the elastic one. Derivatives in docs/theory.md, "Bending".
+// the dissipation function D = ½ EI τ ((k·k̇)² + κ_ε² |k̇|²) / (κ² + κ_ε²): ½ EI τ κ̇² once the
+// element is bent (κ ≫ κ_ε), so that a bent element in rigid rotation (k̇ = ω × k, k·k̇ = 0)
+// dissipates next to nothing, and ½ EI τ |k̇|² near straight, where the direction of κ̇ is
+// undefined. Its force ∂D/∂ė = Jᵀ m_v with m_v = EI τ ((k·k̇) k + κ_ε² k̇) / (κ² + κ_ε²).
+// Derivatives in docs/theory.md, "Bending".
 void AddBendingTerms(const CableElementParameters& p, const Matrix34d& e, const Matrix34d& e_dot,
                      const Vector4d& ds, const Vector4d& dds, double weight,
                      const CableForceOutputs& out) {
@@ -96,20 +97,23 @@ void AddBendingTerms(const CableElementParameters& p, const Matrix34d& e, const 
   const bool damped = ei_tau > 0.0;
   const Vector12d e_dot_vec = Eigen::Map<const Vector12d>(e_dot.data());
   const Vector3d k_dot = damped ? Vector3d(jk_t.transpose() * e_dot_vec) : Vector3d::Zero();
-  const double kappa_eps = kCurvatureRateRegularisation / p.length;
-  const double d = k.squaredNorm() + kappa_eps * kappa_eps;
-  const double s = k.dot(k_dot);                 // κ κ̇
-  const double mu_viscous = ei_tau * s / d;      // viscous "moment" per unit k
-  const Vector3d m = (ei + mu_viscous) * k;      // moment vector conjugate to k
-  const Vector12d jk = jk_t * k;                 // Jᵀ k = κ ∂κ/∂e
+  const double kappa_eps = kCurvatureBlend / p.length;
+  const double eps2 = kappa_eps * kappa_eps;
+  const double d = k.squaredNorm() + eps2;
+  const double s = k.dot(k_dot);  // κ κ̇
+  const Vector3d m_viscous = (ei_tau / d) * (s * k + eps2 * k_dot);
+  const Vector3d m = ei * k + m_viscous;  // moment vector conjugate to k
+  const Vector12d jk = jk_t * k;          // Jᵀ k = κ ∂κ/∂e
 
   if (out.force) out.force->noalias() += weight * (jk_t * m);
-  if (out.viscous_force && damped) out.viscous_force->noalias() += (weight * mu_viscous) * jk;
-  if (out.damping && damped) out.damping->noalias() += (weight * ei_tau / d) * jk * jk.transpose();
+  if (out.viscous_force && damped) out.viscous_force->noalias() += weight * (jk_t * m_viscous);
+  if (out.damping && damped)
+    out.damping->noalias() +=
+        (weight * ei_tau / d) * (jk * jk.transpose() + eps2 * jk_t * jk_t.transpose());
   if (!out.stiffness) return;
 
   Matrix12d& kt = *out.stiffness;
-  kt.noalias() += (weight * (ei + mu_viscous)) * jk_t * jk_t.transpose();
+  kt.noalias() += (weight * ei) * jk_t * jk_t.transpose();
   // Σ_i m_i ∂²k_i/∂e² = h Σ m_i ∂²c_i + (∂cᵀm) ∇hᵀ + ∇h (∂cᵀm)ᵀ + (m·c) ∂²h.
   const Matrix3d m_skew = Skew(m);
   AddKronecker(dds, ds, m_skew, weight * h, kt);
@@ -121,8 +125,8 @@ void AddBendingTerms(const CableElementParameters& p, const Matrix34d& e, const 
   kt.noalias() += (mc * 15.0 * g52 / g) * da * da.transpose();
   AddKroneckerIdentity(ds, ds, -3.0 * mc * g52, kt);
   if (!damped) return;
-  // The viscous moment's factor μ = EI τ s/d depends on e through s = k·k̇ (k̇ = J ė) and
-  // d: Jᵀ k (∂μ/∂e)ᵀ with ∂μ/∂e = EI τ/d (Jᵀ k̇ + (∂k̇/∂e)ᵀ k − 2 (s/d) Jᵀ k), where column i of
+  // m_v depends on e through k, k̇ = J ė and d: Jᵀ ∂m_v/∂e = EI τ/d (Jᵀk ∇sᵀ + s JᵀJ
+  // + κ_ε² Jᵀ ∂k̇/∂e) − (2/d) Jᵀm_v (Jᵀk)ᵀ, with ∇s = Jᵀ k̇ + (∂k̇/∂e)ᵀ k, where column i of
   // (∂k̇/∂e)ᵀ is (∂²k_i/∂e²) ė = h ∂²c_i ė + ∇c_i ḣ + ∇h ċ_i + c_i ∂²h ė.
   const Vector3d a_dot = e_dot * ds;
   const Vector3d b_dot = e_dot * dds;
@@ -135,7 +139,10 @@ void AddBendingTerms(const CableElementParameters& p, const Matrix34d& e, const 
   const Matrix12x3d dk_dot_t =
       h * hess_c_edot + h_dot * dc_t + grad_h * c_dot.transpose() + hess_h_edot * c.transpose();
   const Vector12d grad_s = jk_t * k_dot + dk_dot_t * k;
-  kt.noalias() += (weight * ei_tau / d) * jk * (grad_s - (2.0 * s / d) * jk).transpose();
+  const double scale = weight * ei_tau / d;
+  kt.noalias() += scale * (jk * grad_s.transpose() + s * jk_t * jk_t.transpose() +
+                           eps2 * jk_t * dk_dot_t.transpose());
+  kt.noalias() -= (2.0 * weight / d) * (jk_t * m_viscous) * jk.transpose();
 }
 
 }  // namespace
