@@ -18,10 +18,11 @@ double CalcStrainEnergy(const Model& model, const VectorXd& q) {
   return energy;
 }
 
-EnergyTracker::EnergyTracker(const Model& model, const Workspace& ws, const VectorXd& q)
-    : q_(q), applied_(ws.applied_force), viscous_(ws.viscous_force) {
+EnergyTracker::EnergyTracker(const Model& model, const Workspace& ws, const VectorXd& q,
+                             double load_factor)
+    : q_(q), applied_(ws.applied_force), viscous_(ws.viscous_force), load_factor_(load_factor) {
   account_.strain = CalcStrainEnergy(model, q);
-  account_.gravity = 0.0 - ws.gravity_force.dot(q);  // +0, not −0, without gravity
+  account_.gravity = 0.0 - load_factor * ws.gravity_force.dot(q);  // +0, not −0, without gravity
 }
 
 void EnergyTracker::Advance(const Model& model, const Workspace& ws, const VectorXd& q,
@@ -34,12 +35,18 @@ void EnergyTracker::Advance(const Model& model, const Workspace& ws, const Vecto
     work += 0.5 * (applied_[i] + ws.applied_force[i]) * dq;
     dissipated += 0.5 * (viscous_[i] + ws.viscous_force[i]) * dq;
   }
+  // A growing gravity load (static load stepping) changes V = −λ Q_gᵀq also through λ; that part,
+  // −∫ Q_gᵀq dλ, is work put in by raising the load, so the balance stays constant.
+  const double gravity_then = ws.gravity_force.dot(q_);
+  const double gravity_now = ws.gravity_force.dot(q);
+  work -= 0.5 * (gravity_then + gravity_now) * (load_factor - load_factor_);
   account_.work += work;
   account_.dissipated += dissipated;
   account_.kinetic = CalcKineticEnergy(model, ws, v);
   account_.strain = CalcStrainEnergy(model, q);
   account_.gravity = 0.0 - load_factor * ws.gravity_force.dot(q);
   q_ = q;
+  load_factor_ = load_factor;
   applied_ = ws.applied_force;
   viscous_ = ws.viscous_force;
 }

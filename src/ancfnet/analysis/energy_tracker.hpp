@@ -15,11 +15,14 @@ double CalcStrainEnergy(const Model& model, const VectorXd& q);
 
 /// Accumulates the work of the applied loads W = ∫ Q_applied · dq and the energy dissipated by
 /// material damping D = ∫ Q_visc · dq with the trapezoidal rule over each step, and evaluates
-/// the state energies. Gravity enters through its potential −λ Q_gᵀ q (Q_g constant).
+/// the state energies. Gravity enters through its potential V = −λ Q_gᵀ q (Q_g constant); when λ
+/// grows (static load steps) the work −∫ Q_gᵀ q dλ of raising it is added to W.
 class EnergyTracker {
  public:
-  /// Starts at `q` with the forces currently in `ws` (applied_force, viscous_force).
-  EnergyTracker(const Model& model, const Workspace& ws, const VectorXd& q);
+  /// Starts at `q` and load factor λ with the forces currently in `ws` (applied_force,
+  /// viscous_force).
+  EnergyTracker(const Model& model, const Workspace& ws, const VectorXd& q,
+                double load_factor = 1.0);
   /// Advances to the accepted state (q, v) with the forces in `ws` evaluated there.
   void Advance(const Model& model, const Workspace& ws, const VectorXd& q, const VectorXd& v,
                double load_factor);
@@ -30,6 +33,7 @@ class EnergyTracker {
   VectorXd q_;
   VectorXd applied_;
   VectorXd viscous_;
+  double load_factor_ = 1.0;
 };
 
 }  // namespace ancfnet

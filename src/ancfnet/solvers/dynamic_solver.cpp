@@ -55,6 +55,10 @@ SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings,
       continue;
     }
     ++result.statistics.steps;
+    // Land exactly on output and end times (no round-off from summing steps).
+    if (std::abs(state->t - end) <= time_eps) state->t = end;
+    if (output_interval > 0.0 && std::abs(state->t - next_output) <= time_eps)
+      state->t = next_output;
     energy.Advance(model, integrator.workspace(), state->q, state->v, 1.0);
     if (++accepted_in_a_row >= kStepsBeforeGrowth && step < nominal) {
       step = std::min(2.0 * step, nominal);

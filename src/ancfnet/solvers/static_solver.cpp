@@ -62,7 +62,7 @@ SolveResult SolveStatic(const Model& model, const StaticSettings& settings,
   state->t = 0.0;
   CalcInternalForces(model, state->q, state->v, ws);
   CalcExternalForces(model, state->q, 0.0, ws);
-  EnergyTracker energy(model, ws, state->q);
+  EnergyTracker energy(model, ws, state->q, /*load_factor=*/0.0);
   SolveResult result;
   if (!EmitOutput(output, *state, energy.account(), &result)) return result;
 
