@@ -37,7 +37,7 @@ TEST(StaticEnergy, BalanceHoldsAlongTheLoadPathWithGravity) {
   ASSERT_TRUE(result.completed) << result.message;
   EXPECT_EQ(first_gravity, 0.0);  // λ = 0: no gravity load yet
   EXPECT_GT(work, 5.0);           // measured 9.39 J in all
-  EXPECT_LT(worst, 5e-4 * work);  // measured 1.3e-4 of the work, at λ = 1
+  EXPECT_LT(worst, 5e-4 * work);  // measured 3.4e-4 of the work (trapezoidal rule), at λ = 1
 }
 
 }  // namespace
