@@ -87,26 +87,39 @@ void AddBendingTerms(const CableElementParameters& p, const Matrix34d& e, const 
   const double h = 1.0 / (g * std::sqrt(g));  // g^{-3/2}
   const Vector3d c = a.cross(b);
   const Vector3d k = h * c;
-  const Vector12d da = DistributeForce(ds, a);          // ∂g/∂e / 2
-  const Vector12d grad_h = (-3.0 * h / g) * da;        // ∂h/∂e
-  const Matrix12x3d dc_t = StackBlocks(ds, Skew(b), dds, -Skew(a));  // (∂c/∂e)ᵀ
-  const Matrix12x3d jk_t = h * dc_t + grad_h * c.transpose();         // Jᵀ = (∂k/∂e)ᵀ
+  const Vector12d da = DistributeForce(ds, a);  // ∂g/∂e / 2
+  const Vector12d grad_h = (-3.0 * h / g) * da;  // ∂h/∂e
+  // Jᵀ x = h (∂c/∂e)ᵀ x + ∇h (c·x), with block j of (∂c/∂e)ᵀ x equal to S′_j (b × x) − S″_j (a × x):
+  // the force path needs no 12×3 matrix.
+  const auto apply_jt = [&](const Vector3d& x) -> Vector12d {
+    return h * (DistributeForce(ds, b.cross(x)) - DistributeForce(dds, a.cross(x))) +
+           c.dot(x) * grad_h;
+  };
 
   const double ei = p.bending_stiffness;
   const double ei_tau = ei * p.bending_damping_time;
   const bool damped = ei_tau > 0.0;
-  const Vector12d e_dot_vec = Eigen::Map<const Vector12d>(e_dot.data());
-  const Vector3d k_dot = damped ? Vector3d(jk_t.transpose() * e_dot_vec) : Vector3d::Zero();
+  const double g52 = h / g;  // g^{-5/2}
+  const Vector3d a_dot = e_dot * ds;
+  const Vector3d b_dot = e_dot * dds;
+  const double a_adot = a.dot(a_dot);
+  const double h_dot = -3.0 * g52 * a_adot;
+  const Vector3d c_dot = a_dot.cross(b) + a.cross(b_dot);
+  const Vector3d k_dot = damped ? Vector3d(h * c_dot + h_dot * c) : Vector3d::Zero();  // J ė
   const double kappa_eps = kCurvatureBlend / p.length;
   const double eps2 = kappa_eps * kappa_eps;
   const double d = k.squaredNorm() + eps2;
   const double s = k.dot(k_dot);  // κ κ̇
   const Vector3d m_viscous = (ei_tau / d) * (s * k + eps2 * k_dot);
   const Vector3d m = ei * k + m_viscous;  // moment vector conjugate to k
-  const Vector12d jk = jk_t * k;          // Jᵀ k = κ ∂κ/∂e
 
-  if (out.force) out.force->noalias() += weight * (jk_t * m);
-  if (out.viscous_force && damped) out.viscous_force->noalias() += weight * (jk_t * m_viscous);
+  if (out.force) out.force->noalias() += weight * apply_jt(m);
+  if (out.viscous_force && damped) out.viscous_force->noalias() += weight * apply_jt(m_viscous);
+  if (!out.stiffness && !(out.damping && damped)) return;
+
+  const Matrix12x3d dc_t = StackBlocks(ds, Skew(b), dds, -Skew(a));  // (∂c/∂e)ᵀ
+  const Matrix12x3d jk_t = h * dc_t + grad_h * c.transpose();         // Jᵀ = (∂k/∂e)ᵀ
+  const Vector12d jk = apply_jt(k);                                   // Jᵀ k = κ ∂κ/∂e
   if (out.damping && damped)
     out.damping->noalias() +=
         (weight * ei_tau / d) * (jk * jk.transpose() + eps2 * jk_t * jk_t.transpose());
@@ -121,18 +134,12 @@ void AddBendingTerms(const CableElementParameters& p, const Matrix34d& e, const 
   const Vector12d dc_m = dc_t * m;
   kt.noalias() += weight * (dc_m * grad_h.transpose() + grad_h * dc_m.transpose());
   const double mc = weight * m.dot(c);
-  const double g52 = h / g;  // g^{-5/2}
   kt.noalias() += (mc * 15.0 * g52 / g) * da * da.transpose();
   AddKroneckerIdentity(ds, ds, -3.0 * mc * g52, kt);
   if (!damped) return;
   // m_v depends on e through k, k̇ = J ė and d: Jᵀ ∂m_v/∂e = EI τ/d (Jᵀk ∇sᵀ + s JᵀJ
   // + κ_ε² Jᵀ ∂k̇/∂e) − (2/d) Jᵀm_v (Jᵀk)ᵀ, with ∇s = Jᵀ k̇ + (∂k̇/∂e)ᵀ k, where column i of
   // (∂k̇/∂e)ᵀ is (∂²k_i/∂e²) ė = h ∂²c_i ė + ∇c_i ḣ + ∇h ċ_i + c_i ∂²h ė.
-  const Vector3d a_dot = e_dot * ds;
-  const Vector3d b_dot = e_dot * dds;
-  const double a_adot = a.dot(a_dot);
-  const double h_dot = -3.0 * g52 * a_adot;
-  const Vector3d c_dot = a_dot.cross(b) + a.cross(b_dot);
   const Vector12d hess_h_edot =
       (15.0 * g52 / g * a_adot) * da - 3.0 * g52 * DistributeForce(ds, a_dot);
   const Matrix12x3d hess_c_edot = StackBlocks(dds, -Skew(a_dot), ds, Skew(b_dot));

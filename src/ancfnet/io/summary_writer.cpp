@@ -64,6 +64,7 @@ void WriteSummaryJson(const std::filesystem::path& path, const RunSummary& summa
       {"jacobian_updates", summary.jacobian_updates},
       {"step_cuts", summary.step_cuts},
       {"wall_time_s", Number(summary.wall_time_s)},
+      {"output_time_s", Number(summary.output_time_s)},
       {"energy", EnergyJson(summary.energy)},
       {"probes", probe_values},
   };

@@ -23,14 +23,15 @@ struct RunSummary {
   long jacobian_updates = 0;
   long step_cuts = 0;
   long outputs = 0;        ///< output steps written (rows of probes.csv)
-  double wall_time_s = 0.0;  ///< s
+  double wall_time_s = 0.0;    ///< whole analysis, outputs included (s)
+  double output_time_s = 0.0;  ///< part of it spent writing probes.csv and VTK frames (s)
   EnergyAccount energy;      ///< energies at the end (J)
 };
 
 /// Writes `summary` and the final values of `probes` (EvaluateProbe on `state` with
 /// summary.energy) to `path` as JSON, indented by 2:
 /// `{"status": "completed"|"failed", "message", "analysis", "time", "steps", "newton_iterations",
-/// "jacobian_updates", "step_cuts", "wall_time_s", "energy": {"kinetic", "strain", "gravity",
+/// "jacobian_updates", "step_cuts", "wall_time_s", "output_time_s", "energy": {"kinetic", "strain", "gravity",
 /// "work", "dissipated", "balance"}, "probes": {NAME: {"position": [x, y, z]} |
 /// {"velocity": [vx, vy, vz]} | {"energy": {"kinetic", …}}}}`. Units as in the CSV (s, m, m/s,
 /// J). Non-finite numbers are written as null. Throws InputError "cannot write PATH" on failure.

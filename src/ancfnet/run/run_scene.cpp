@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <chrono>
 #include <cmath>
 #include <memory>
 #include <utility>
@@ -74,8 +75,11 @@ RunSummary RunScene(const Scene& scene, const RunOptions& options) {
   State state = MakeInitialState(scene.model);
   State last_written = state;
   long outputs = 0;
+  std::chrono::steady_clock::duration output_time{};
   const OutputCallback output = [&](const State& s, const EnergyAccount& energy) {
+    const auto start = std::chrono::steady_clock::now();
     writers.Write(s, energy);
+    output_time += std::chrono::steady_clock::now() - start;
     last_written = s;
     ++outputs;
     progress.Update(s.t, outputs);
@@ -97,6 +101,7 @@ RunSummary RunScene(const Scene& scene, const RunOptions& options) {
   summary.step_cuts = result.statistics.step_cuts;
   summary.outputs = outputs;
   summary.wall_time_s = progress.elapsed_s();
+  summary.output_time_s = std::chrono::duration<double>(output_time).count();
   summary.energy = writers.last_energy();
   // Final values are those of the last state written, which is always finite.
   WriteSummaryJson(options.output_dir / "summary.json", summary, scene.probes, scene.model,
