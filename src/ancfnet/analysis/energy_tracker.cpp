@@ -8,6 +8,8 @@ double CalcKineticEnergy(const Model& model, const Workspace& ws, const VectorXd
     const Vector12d ve = model.Gather(model.elements()[e], v);
     energy += 0.5 * ve.dot(ws.element_mass[e] * ve);
   }
+  for (const PointMass& point : model.point_masses())
+    energy += 0.5 * point.mass * v.segment<3>(point.dof).squaredNorm();
   return energy;
 }
 

@@ -27,6 +27,13 @@ Matrix3d MomentSlopeJacobian(const Vector3d& moment, const Vector3d& a) {
   return skew_m / g - 2.0 / (g * g) * moment.cross(a) * a.transpose();
 }
 
+// scale · m I on the diagonal block of every point mass.
+void AddPointMassMatrix(const Model& model, double scale, SystemMatrix* matrix) {
+  const auto& points = model.point_masses();
+  for (std::size_t i = 0; i < points.size(); ++i)
+    matrix->AddPointMassBlock(static_cast<Index>(i), Matrix3d::Identity(), scale * points[i].mass);
+}
+
 }  // namespace
 
 void CalcInternalForces(const Model& model, const VectorXd& q, const VectorXd& v, Workspace& ws) {
@@ -55,7 +62,7 @@ void CalcExternalForces(const Model& model, const VectorXd& q, double load_facto
     ScatterAdd(element, DistributeForce(shape.s, load.force), &ws.applied_force);
   }
   for (const PointMoment& load : model.point_moments()) {
-    const Index slope = Model::NodeDof(load.node) + 3;
+    const Index slope = model.NodeSlopeDof(load.node);
     ws.applied_force.segment<3>(slope) += MomentSlopeForce(load.moment, q.segment<3>(slope));
   }
   ws.applied_force *= load_factor;
@@ -87,9 +94,10 @@ void AssembleIterationMatrix(const Model& model, const VectorXd& q, const Vector
     if (weights.mass != 0.0) matrix->AddElementBlock(e, ws.element_mass[e], weights.mass);
     if (need_damping) matrix->AddElementBlock(e, ws.element_damping[e], weights.damping);
   }
+  if (weights.mass != 0.0) AddPointMassMatrix(model, weights.mass, matrix);
   // Point moments depend on the slope: −c_K λ ∂Q_ext/∂q.
   for (const PointMoment& load : model.point_moments()) {
-    const Index slope = Model::NodeDof(load.node) + 3;
+    const Index slope = model.NodeSlopeDof(load.node);
     matrix->AddBlock3(slope, slope, MomentSlopeJacobian(load.moment, q.segment<3>(slope)),
                       -weights.stiffness * load_factor);
   }
@@ -99,6 +107,7 @@ void AssembleMassMatrix(const Model& model, const Workspace& ws, SystemMatrix* m
   matrix->SetZero();
   for (std::size_t e = 0; e < model.elements().size(); ++e)
     matrix->AddElementBlock(static_cast<Index>(e), ws.element_mass[e]);
+  AddPointMassMatrix(model, 1.0, matrix);
 }
 
 }  // namespace ancfnet

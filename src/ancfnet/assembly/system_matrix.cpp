@@ -1,5 +1,6 @@
 #include "ancfnet/assembly/system_matrix.hpp"
 
+#include <algorithm>
 #include <cassert>
 
 #include "ancfnet/model/model.hpp"
@@ -16,29 +17,49 @@ int FindSlot(const SparseMatrixd& m, Index row, Index col) {
   return static_cast<int>(it - m.innerIndexPtr());
 }
 
+// The coordinates of a group of 3-blocks, in order.
+std::vector<Index> GroupCoordinates(const std::vector<Index>& blocks) {
+  std::vector<Index> coordinates;
+  for (Index first : blocks)
+    for (int k = 0; k < 3; ++k) coordinates.push_back(first + k);
+  return coordinates;
+}
+
 }  // namespace
 
-SystemMatrix::SystemMatrix(const Model& model, const DofMap& dofs) : dofs_(&dofs) {
-  const auto& elements = model.elements();
+SystemMatrix::SystemMatrix(const Model& model, const DofMap& dofs,
+                           const std::vector<std::vector<Index>>& extra_groups)
+    : dofs_(&dofs),
+      num_elements_(static_cast<Index>(model.elements().size())),
+      num_point_masses_(static_cast<Index>(model.point_masses().size())) {
+  std::vector<std::vector<Index>> blocks;
+  for (const CableElement& element : model.elements())
+    blocks.push_back({element.dofs[0], element.dofs[3], element.dofs[6], element.dofs[9]});
+  for (const PointMass& point : model.point_masses()) blocks.push_back({point.dof});
+  blocks.insert(blocks.end(), extra_groups.begin(), extra_groups.end());
+
   std::vector<Eigen::Triplet<double, int>> triplets;
-  triplets.reserve(elements.size() * kCableElementDofs * kCableElementDofs);
-  for (const CableElement& element : elements)
-    for (Index c : element.dofs)
-      for (Index r : element.dofs)
+  for (const auto& group : blocks) {
+    const std::vector<Index> coordinates = GroupCoordinates(group);
+    for (Index c : coordinates)
+      for (Index r : coordinates)
         if (dofs.unknown(r) >= 0 && dofs.unknown(c) >= 0)
           triplets.emplace_back(dofs.unknown(r), dofs.unknown(c), 0.0);
+  }
   matrix_.resize(dofs.num_unknowns(), dofs.num_unknowns());
   matrix_.setFromTriplets(triplets.begin(), triplets.end());
   matrix_.makeCompressed();
 
-  slot_.assign(elements.size() * kCableElementDofs * kCableElementDofs, -1);
-  for (std::size_t e = 0; e < elements.size(); ++e)
-    for (int j = 0; j < kCableElementDofs; ++j)
-      for (int i = 0; i < kCableElementDofs; ++i) {
-        const Index r = dofs.unknown(elements[e].dofs[i]);
-        const Index c = dofs.unknown(elements[e].dofs[j]);
-        if (r >= 0 && c >= 0) slot_[144 * e + 12 * j + i] = FindSlot(matrix_, r, c);
+  for (const auto& group : blocks) {
+    const std::vector<Index> coordinates = GroupCoordinates(group);
+    groups_.push_back({static_cast<int>(group.size()), slot_.size()});
+    for (Index c : coordinates)
+      for (Index r : coordinates) {
+        const Index row = dofs.unknown(r);
+        const Index col = dofs.unknown(c);
+        slot_.push_back(row >= 0 && col >= 0 ? FindSlot(matrix_, row, col) : -1);
       }
+  }
 }
 
 void SystemMatrix::SetZero() {
@@ -47,10 +68,28 @@ void SystemMatrix::SetZero() {
 
 void SystemMatrix::AddElementBlock(Index element, const Matrix12d& block, double scale) {
   double* values = matrix_.valuePtr();
-  const int* slots = slot_.data() + 144 * element;
+  const int* slots = slot_.data() + groups_[element].first_slot;
   for (int j = 0; j < kCableElementDofs; ++j)
     for (int i = 0; i < kCableElementDofs; ++i)
       if (slots[12 * j + i] >= 0) values[slots[12 * j + i]] += scale * block(i, j);
+}
+
+void SystemMatrix::AddGroupBlock(const Group& group, int i, int j, const Matrix3d& block,
+                                 double scale) {
+  double* values = matrix_.valuePtr();
+  const int stride = 3 * group.num_blocks;
+  const int* slots = slot_.data() + group.first_slot + stride * 3 * j + 3 * i;
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r)
+      if (slots[stride * c + r] >= 0) values[slots[stride * c + r]] += scale * block(r, c);
+}
+
+void SystemMatrix::AddPointMassBlock(Index point, const Matrix3d& block, double scale) {
+  AddGroupBlock(groups_[num_elements_ + point], 0, 0, block, scale);
+}
+
+void SystemMatrix::AddExtraBlock(Index group, int i, int j, const Matrix3d& block, double scale) {
+  AddGroupBlock(groups_[num_elements_ + num_point_masses_ + group], i, j, block, scale);
 }
 
 void SystemMatrix::AddBlock3(Index row, Index col, const Matrix3d& block, double scale) {

@@ -1,6 +1,6 @@
 #pragma once
-/// @file A sparse matrix over the unknowns whose pattern is built once from the element
-/// connectivity, with precomputed maps from each element's 12×12 block to the stored values.
+/// @file A sparse matrix over the unknowns whose pattern is built once from the couplings of the
+/// model, with precomputed maps from each coupling's dense block to the stored values.
 
 #include <vector>
 
@@ -11,25 +11,42 @@ namespace ancfnet {
 
 class Model;
 
+/// The couplings are groups of 3-coordinate blocks whose coordinates interact: each cable element
+/// (its blocks r_A, r'_A, r_B, r'_B), each point mass (one block), and each extra group added by
+/// later force elements (a spring-damper couples the blocks of its two points).
 class SystemMatrix {
  public:
-  /// Pattern of all element couplings between unknowns of `dofs`, values zero.
-  SystemMatrix(const Model& model, const DofMap& dofs);
+  /// Pattern of the model's element and point-mass couplings plus `extra_groups` (each a list
+  /// of first coordinates of 3-blocks), between unknowns of `dofs`; values zero.
+  SystemMatrix(const Model& model, const DofMap& dofs,
+               const std::vector<std::vector<Index>>& extra_groups = {});
 
   const SparseMatrixd& matrix() const { return matrix_; }
   void SetZero();
-  /// Adds scale · block to the entries of element `element` (rows/columns of fixed coordinates
-  /// are skipped). No search, no allocation.
+  /// Adds scale · block to the entries of cable element `element` (rows/columns of fixed
+  /// coordinates are skipped). No search, no allocation.
   void AddElementBlock(Index element, const Matrix12d& block, double scale = 1.0);
+  /// Adds scale · block to the 3×3 diagonal block of point mass `point`.
+  void AddPointMassBlock(Index point, const Matrix3d& block, double scale = 1.0);
+  /// Adds scale · block to the 3×3 block (row block i, column block j) of extra group `group`.
+  void AddExtraBlock(Index group, int i, int j, const Matrix3d& block, double scale = 1.0);
   /// Adds scale · block to the 3×3 block of rows starting at coordinate `row`, columns at `col`
-  /// (both inside one element's coordinates).
+  /// (both inside one coupling group). Searches the pattern: for rare terms only.
   void AddBlock3(Index row, Index col, const Matrix3d& block, double scale = 1.0);
 
  private:
+  struct Group {
+    int num_blocks = 0;
+    std::size_t first_slot = 0;  // slots of entry (i, j) at first_slot + 3 num_blocks j + i
+  };
+  void AddGroupBlock(const Group& group, int i, int j, const Matrix3d& block, double scale);
+
   const DofMap* dofs_;
   SparseMatrixd matrix_;
-  // For element e, slot_[144 e + 12 j + i] is the index in matrix_.valuePtr() of entry (i, j) of
-  // its block, or −1 when row or column is fixed.
+  std::vector<Group> groups_;  // elements, then point masses, then extra groups
+  Index num_elements_ = 0;
+  Index num_point_masses_ = 0;
+  // Index in matrix_.valuePtr() of each group entry, or −1 when its row or column is fixed.
   std::vector<int> slot_;
 };
 

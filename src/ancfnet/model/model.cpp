@@ -12,7 +12,14 @@ namespace ancfnet {
 double Model::total_mass() const {
   double mass = 0.0;
   for (const Cable& cable : cables_) mass += cable.properties.mass_per_length * cable.length;
+  for (const PointMass& point : point_masses_) mass += point.mass;
   return mass;
+}
+
+Index Model::FindPointMass(const std::string& name) const {
+  for (std::size_t i = 0; i < point_masses_.size(); ++i)
+    if (point_masses_[i].name == name) return static_cast<Index>(i);
+  return -1;
 }
 
 Index Model::FindCable(const std::string& name) const {

@@ -18,8 +18,23 @@ struct Cable {
   Index first_node = 0;     ///< nodes first_node … first_node + num_elements
   Index first_element = 0;  ///< elements first_element … first_element + num_elements − 1
   Index num_elements = 0;
-  double length = 0.0;  ///< reference length (m)
+  double length = 0.0;  ///< reference (natural, stress-free) length (m)
   CableProperties properties;
+};
+
+/// Where the coordinates of a cable node live: its position r (3 coordinates from
+/// position_dof), which an ideal knot shares with the other threads meeting there, and its
+/// slope r' (3 coordinates from slope_dof), always its own.
+struct CableNode {
+  Index position_dof = 0;
+  Index slope_dof = 0;
+};
+
+/// A concentrated mass with three position coordinates: a knot, a bullet, any lumped mass.
+struct PointMass {
+  std::string name;
+  double mass = 0.0;  ///< kg, > 0
+  Index dof = 0;      ///< first of its 3 coordinates
 };
 
 /// One ANCF cable element and where its 12 coordinates live in the global vector.
@@ -55,13 +70,16 @@ struct DistributedLoad {
   Vector3d force_per_length = Vector3d::Zero();
 };
 
-/// The system description. Coordinates are numbered node by node, six per cable node
-/// (r, r'); a coordinate is either free (an unknown) or fixed at its initial value.
+/// The system description. Coordinates are numbered in the order things are added: six per
+/// cable node (r, r'; three when the position is a knot's), three per point mass. A coordinate is
+/// either free (an unknown) or fixed at its initial value.
 class Model {
  public:
   Index num_dofs() const { return static_cast<Index>(initial_positions_.size()); }
-  Index num_nodes() const { return num_dofs() / kCableNodeDofs; }
+  Index num_nodes() const { return static_cast<Index>(nodes_.size()); }
   const std::vector<Cable>& cables() const { return cables_; }
+  const std::vector<CableNode>& nodes() const { return nodes_; }
+  const std::vector<PointMass>& point_masses() const { return point_masses_; }
   const std::vector<CableElement>& elements() const { return elements_; }
   const std::vector<PointForce>& point_forces() const { return point_forces_; }
   const std::vector<PointMoment>& point_moments() const { return point_moments_; }
@@ -71,13 +89,16 @@ class Model {
   const std::vector<bool>& fixed() const { return fixed_; }
   const VectorXd& initial_positions() const { return initial_positions_; }
   const VectorXd& initial_velocities() const { return initial_velocities_; }
-  /// Total mass of the cables (kg).
+  /// Total mass of the cables and point masses (kg).
   double total_mass() const;
 
-  /// First global coordinate of a node.
-  static Index NodeDof(Index node) { return kCableNodeDofs * node; }
+  /// First global coordinate of a node's position r and of its slope r'.
+  Index NodePositionDof(Index node) const { return nodes_[node].position_dof; }
+  Index NodeSlopeDof(Index node) const { return nodes_[node].slope_dof; }
   /// Index of the cable with this name; throws InputError (listing the names) when there is none.
   Index FindCable(const std::string& name) const;
+  /// Index of the point mass with this name, or −1.
+  Index FindPointMass(const std::string& name) const;
   /// Material point at fraction s ∈ [0, 1] of a cable's reference length.
   MaterialPoint LocateCablePoint(Index cable, double s) const;
   /// Node at fraction s of a cable; throws InputError when s is not at a node.
@@ -90,7 +111,9 @@ class Model {
  private:
   friend class ModelBuilder;
   std::vector<Cable> cables_;
+  std::vector<CableNode> nodes_;
   std::vector<CableElement> elements_;
+  std::vector<PointMass> point_masses_;
   std::vector<PointForce> point_forces_;
   std::vector<PointMoment> point_moments_;
   std::vector<DistributedLoad> distributed_loads_;

@@ -1,5 +1,6 @@
 #include "ancfnet/model/model_builder.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -41,18 +42,49 @@ void ModelBuilder::SetGravity(const Vector3d& gravity) {
   model_.gravity_ = gravity;
 }
 
-Index ModelBuilder::AddCable(const CableSpec& spec) {
-  if (spec.name.empty()) throw InputError("a cable needs a non-empty name");
+void ModelBuilder::CheckNameIsFree(const std::string& name) const {
+  if (name.empty()) throw InputError("cables and point masses need a non-empty name");
   for (const Cable& cable : model_.cables_)
-    if (cable.name == spec.name)
-      throw InputError(fmt::format("two cables are named '{}'", spec.name));
+    if (cable.name == name) throw InputError(fmt::format("two cables are named '{}'", name));
+  if (model_.FindPointMass(name) >= 0)
+    throw InputError(fmt::format("a point mass is already named '{}'", name));
+}
+
+Index ModelBuilder::AddCoordinates(const VectorXd& initial_values) {
+  const Index first = model_.num_dofs();
+  const Index n = first + static_cast<Index>(initial_values.size());
+  model_.initial_positions_.conservativeResize(n);
+  model_.initial_positions_.tail(initial_values.size()) = initial_values;
+  model_.initial_velocities_.conservativeResizeLike(VectorXd::Zero(n));
+  model_.fixed_.resize(n, false);
+  return first;
+}
+
+Index ModelBuilder::EndPositionDof(const std::string& knot, const Vector3d& position,
+                                   const char* which) {
+  if (knot.empty()) return AddCoordinates(position);
+  const Index mass = model_.FindPointMass(knot);
+  if (mass < 0) throw InputError(fmt::format("no point mass named '{}' for the cable {}", knot, which));
+  const Index dof = model_.point_masses_[mass].dof;
+  const Vector3d at = model_.initial_positions_.segment<3>(dof);
+  if ((at - position).norm() > 1e-9 * std::max(1.0, position.norm()))
+    throw InputError(fmt::format("the cable {} [{}, {}, {}] is not at knot '{}' [{}, {}, {}]", which,
+                                 position.x(), position.y(), position.z(), knot, at.x(), at.y(),
+                                 at.z()));
+  return dof;
+}
+
+Index ModelBuilder::AddCable(const CableSpec& spec) {
+  CheckNameIsFree(spec.name);
   RequireFinite(spec.start, "cable start");
   RequireFinite(spec.end, "cable end");
   if (spec.num_elements < 1)
     throw InputError(fmt::format("a cable needs at least 1 element (got {})", spec.num_elements));
-  const double length = (spec.end - spec.start).norm();
-  if (!(length > 0.0))
+  const double distance = (spec.end - spec.start).norm();
+  if (!(distance > 0.0))
     throw InputError(fmt::format("cable '{}' has zero length (start equals end)", spec.name));
+  RequireNonNegative(spec.natural_length, "natural length");
+  const double length = spec.natural_length > 0.0 ? spec.natural_length : distance;
   ValidateProperties(spec.properties);
 
   Cable cable;
@@ -65,27 +97,32 @@ Index ModelBuilder::AddCable(const CableSpec& spec) {
   const Index cable_index = static_cast<Index>(model_.cables_.size());
   model_.cables_.push_back(cable);
 
-  // Nodes: positions along the segment, slopes equal to the unit tangent (stress-free).
-  const Index num_nodes = spec.num_elements + 1;
-  const Vector3d tangent = (spec.end - spec.start) / length;
-  const Index first_dof = Model::NodeDof(cable.first_node);
-  model_.initial_positions_.conservativeResize(first_dof + num_nodes * kCableNodeDofs);
-  model_.initial_velocities_.conservativeResizeLike(
-      VectorXd::Zero(first_dof + num_nodes * kCableNodeDofs));
-  for (Index i = 0; i < num_nodes; ++i) {
+  // Nodes along the segment. The slope r' = (end − start)/L is the stretch of the straight cable
+  // against its natural length L: a unit tangent when stress-free.
+  const Vector3d slope = (spec.end - spec.start) / length;
+  for (Index i = 0; i <= spec.num_elements; ++i) {
     const double s = static_cast<double>(i) / spec.num_elements;
-    model_.initial_positions_.segment<3>(first_dof + kCableNodeDofs * i) =
-        spec.start + s * (spec.end - spec.start);
-    model_.initial_positions_.segment<3>(first_dof + kCableNodeDofs * i + 3) = tangent;
+    const Vector3d r = spec.start + s * (spec.end - spec.start);
+    CableNode node;
+    if (i == 0) node.position_dof = EndPositionDof(spec.start_knot, r, "start");
+    else if (i == spec.num_elements) node.position_dof = EndPositionDof(spec.end_knot, r, "end");
+    else node.position_dof = AddCoordinates(r);
+    node.slope_dof = AddCoordinates(slope);
+    model_.nodes_.push_back(node);
   }
-  model_.fixed_.resize(model_.initial_positions_.size(), false);
 
   const CableProperties& p = spec.properties;
   for (Index i = 0; i < spec.num_elements; ++i) {
     CableElement element;
     element.cable = cable_index;
-    for (int k = 0; k < kCableElementDofs; ++k)
-      element.dofs[k] = first_dof + kCableNodeDofs * i + k;
+    const CableNode& a = model_.nodes_[cable.first_node + i];
+    const CableNode& b = model_.nodes_[cable.first_node + i + 1];
+    for (int k = 0; k < 3; ++k) {
+      element.dofs[k] = a.position_dof + k;
+      element.dofs[3 + k] = a.slope_dof + k;
+      element.dofs[6 + k] = b.position_dof + k;
+      element.dofs[9 + k] = b.slope_dof + k;
+    }
     CableElementParameters& ep = element.parameters;
     ep.length = length / spec.num_elements;
     ep.axial_stiffness = p.axial_stiffness;
@@ -101,14 +138,34 @@ Index ModelBuilder::AddCable(const CableSpec& spec) {
   return cable_index;
 }
 
+Index ModelBuilder::AddPointMass(const std::string& name, double mass, const Vector3d& position,
+                                 const Vector3d& velocity) {
+  CheckNameIsFree(name);
+  RequirePositive(mass, "point mass");
+  RequireFinite(position, "point mass position");
+  RequireFinite(velocity, "point mass velocity");
+  const Index dof = AddCoordinates(position);
+  model_.initial_velocities_.segment<3>(dof) = velocity;
+  model_.point_masses_.push_back({name, mass, dof});
+  return static_cast<Index>(model_.point_masses_.size()) - 1;
+}
+
+void ModelBuilder::FixPointMass(const std::string& name) {
+  const Index mass = model_.FindPointMass(name);
+  if (mass < 0) throw InputError(fmt::format("no point mass named '{}'", name));
+  for (int k = 0; k < 3; ++k) model_.fixed_[model_.point_masses_[mass].dof + k] = true;
+}
+
 Index ModelBuilder::LocateNode(const CablePointRef& at) const {
   return model_.LocateCableNode(model_.FindCable(at.cable), at.s);
 }
 
 void ModelBuilder::FixCoordinates(const CablePointRef& at, const CoordinateMask& mask) {
-  const Index first = Model::NodeDof(LocateNode(at));
-  for (int k = 0; k < kCableNodeDofs; ++k)
-    if (mask[k]) model_.fixed_[first + k] = true;
+  const CableNode& node = model_.nodes_[LocateNode(at)];
+  for (int k = 0; k < 3; ++k) {
+    if (mask[k]) model_.fixed_[node.position_dof + k] = true;
+    if (mask[3 + k]) model_.fixed_[node.slope_dof + k] = true;
+  }
 }
 
 void ModelBuilder::AddClamp(const CablePointRef& at) {
@@ -142,17 +199,19 @@ void ModelBuilder::SetInitialVelocity(const std::string& cable_name, const Vecto
   RequireFinite(center, "rotation centre");
   const Cable& cable = model_.cables_[model_.FindCable(cable_name)];
   for (Index i = 0; i <= cable.num_elements; ++i) {
-    const Index dof = Model::NodeDof(cable.first_node + i);
-    const Vector3d r = model_.initial_positions_.segment<3>(dof);
-    const Vector3d slope = model_.initial_positions_.segment<3>(dof + 3);
+    const CableNode& node = model_.nodes_[cable.first_node + i];
+    const Vector3d r = model_.initial_positions_.segment<3>(node.position_dof);
+    const Vector3d slope = model_.initial_positions_.segment<3>(node.slope_dof);
     // Rigid motion: ṙ = v + ω × (r − c), ṙ' = ω × r'.
-    model_.initial_velocities_.segment<3>(dof) = velocity + angular_velocity.cross(r - center);
-    model_.initial_velocities_.segment<3>(dof + 3) = angular_velocity.cross(slope);
+    model_.initial_velocities_.segment<3>(node.position_dof) =
+        velocity + angular_velocity.cross(r - center);
+    model_.initial_velocities_.segment<3>(node.slope_dof) = angular_velocity.cross(slope);
   }
 }
 
 Model ModelBuilder::Build() const {
-  if (model_.cables_.empty()) throw InputError("the model has no cable");
+  if (model_.cables_.empty() && model_.point_masses_.empty())
+    throw InputError("the model has no cable and no point mass");
   Model model = model_;
   // A fixed coordinate cannot move: its initial velocity is zero.
   for (Index i = 0; i < model.num_dofs(); ++i)

@@ -9,13 +9,19 @@
 
 namespace ancfnet {
 
-/// A straight cable from `start` to `end` divided into equal elements, stress-free as built.
+/// A straight cable from `start` to `end` divided into equal elements. Its natural (stress-free)
+/// length defaults to |end − start|; a longer one starts slack (compressed, |r'| < 1), a shorter
+/// one pre-tensioned. An end may share its position coordinates with a point mass (an ideal
+/// knot): the cable's start (end) is then that mass's position, and `start` (`end`) must equal it.
 struct CableSpec {
   std::string name;
   Vector3d start = Vector3d::Zero();  ///< m
   Vector3d end = Vector3d::Zero();    ///< m
   int num_elements = 1;               ///< ≥ 1
   CableProperties properties;
+  double natural_length = 0.0;  ///< m; 0: |end − start|
+  std::string start_knot = {};  ///< point mass whose position the start shares ("" : none)
+  std::string end_knot = {};    ///< point mass whose position the end shares ("" : none)
 };
 
 /// A point of a named cable at fraction s ∈ [0, 1] of its reference length.
@@ -35,6 +41,12 @@ class ModelBuilder {
   void SetGravity(const Vector3d& gravity);
   /// Adds a cable; returns its index. Names must be unique and non-empty.
   Index AddCable(const CableSpec& spec);
+  /// Adds a point mass m > 0 (kg) at `position` (m) moving at `velocity` (m/s); returns its
+  /// index. Names are unique among point masses and cables.
+  Index AddPointMass(const std::string& name, double mass, const Vector3d& position,
+                     const Vector3d& velocity = Vector3d::Zero());
+  /// Fixes the position of a point mass.
+  void FixPointMass(const std::string& name);
   /// Fixes position and slope of the node at `at` (which must be a node).
   void AddClamp(const CablePointRef& at);
   /// Fixes the position of the node at `at`; the slope stays free.
@@ -56,6 +68,11 @@ class ModelBuilder {
 
  private:
   Index LocateNode(const CablePointRef& at) const;
+  void CheckNameIsFree(const std::string& name) const;
+  // Appends n coordinates with these initial values, free and at rest; returns the first.
+  Index AddCoordinates(const VectorXd& initial_values);
+  // Position coordinates of a cable end: the named knot's, or new ones at `position`.
+  Index EndPositionDof(const std::string& knot, const Vector3d& position, const char* which);
   Model model_;
 };
 

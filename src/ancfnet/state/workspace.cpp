@@ -23,6 +23,8 @@ Workspace::Workspace(const Model& model)
     const Vector12d fg = CalcCableDistributedForce(p, p.mass_per_length * model.gravity());
     for (int i = 0; i < kCableElementDofs; ++i) gravity_force[elements[e].dofs[i]] += fg[i];
   }
+  for (const PointMass& point : model.point_masses())
+    gravity_force.segment<3>(point.dof) += point.mass * model.gravity();
   for (const DistributedLoad& load : model.distributed_loads()) {
     const Cable& cable = model.cables()[load.cable];
     for (Index e = cable.first_element; e < cable.first_element + cable.num_elements; ++e) {

@@ -15,7 +15,7 @@ struct Workspace {
 
   // Constant, filled by the constructor.
   std::vector<Matrix12d> element_mass;  ///< consistent mass matrix of each element
-  VectorXd gravity_force;               ///< ∫ ρA Sᵀ g dx, assembled (N)
+  VectorXd gravity_force;               ///< ∫ ρA Sᵀ g dx and m g of point masses (N)
   VectorXd distributed_force;           ///< ∫ Sᵀ w dx of the distributed loads (N)
 
   // Per element, filled by CalcInternalForces / AssembleIterationMatrix.

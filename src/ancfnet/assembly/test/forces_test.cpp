@@ -91,7 +91,7 @@ TEST(Assembly, GravityForceSumsToWeight) {
   const Model model = MakeLoadedModel();
   Workspace ws(model);
   double fz = 0.0;
-  for (Index node = 0; node < model.num_nodes(); ++node) fz += ws.gravity_force[Model::NodeDof(node) + 2];
+  for (Index node = 0; node < model.num_nodes(); ++node) fz += ws.gravity_force[model.NodePositionDof(node) + 2];
   EXPECT_NEAR(fz, -9.81 * model.total_mass(), 1e-12);
 }
 

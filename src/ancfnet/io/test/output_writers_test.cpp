@@ -126,7 +126,7 @@ TEST(ProbeCsvWriter, RefusesNonFiniteValuesWithoutWritingTheRow) {
   writer.Append(model, MakeDeformedState(model, 0.0), MakeEnergy());
 
   State bad = MakeDeformedState(model, 0.25);
-  bad.q[Model::NodeDof(model.LocateCableNode(0, 1.0)) + 1] = kNaN;  // tip.y
+  bad.q[model.NodePositionDof(model.LocateCableNode(0, 1.0)) + 1] = kNaN;  // tip.y
   try {
     writer.Append(model, bad, MakeEnergy());
     FAIL() << "no SolverError";
@@ -164,8 +164,8 @@ Vector3d PointAt(const std::vector<double>& points, Index i) {
   return {points[3 * i], points[3 * i + 1], points[3 * i + 2]};
 }
 
-Vector3d NodePosition(const State& state, Index node) {
-  return state.q.segment<3>(Model::NodeDof(node));
+Vector3d NodePosition(const Model& model, const State& state, Index node) {
+  return state.q.segment<3>(model.NodePositionDof(node));
 }
 
 TEST(VtkSeriesWriter, WritesPolylinesThroughTheNodesAndTheCollection) {
@@ -195,11 +195,11 @@ TEST(VtkSeriesWriter, WritesPolylinesThroughTheNodesAndTheCollection) {
 
   // Cable a: nodes 0..3 at points 0, 4, 8, 12; cable b: nodes 4..6 at points 13, 17, 21.
   const Cable& b = model.cables()[1];
-  EXPECT_TRUE(PointAt(points, 0).isApprox(NodePosition(state1, 0)));
-  EXPECT_TRUE(PointAt(points, 4).isApprox(NodePosition(state1, 1)));
-  EXPECT_TRUE(PointAt(points, 12).isApprox(NodePosition(state1, 3)));
-  EXPECT_TRUE(PointAt(points, 13).isApprox(NodePosition(state1, b.first_node)));
-  EXPECT_TRUE(PointAt(points, 21).isApprox(NodePosition(state1, b.first_node + 2)));
+  EXPECT_TRUE(PointAt(points, 0).isApprox(NodePosition(model, state1, 0)));
+  EXPECT_TRUE(PointAt(points, 4).isApprox(NodePosition(model, state1, 1)));
+  EXPECT_TRUE(PointAt(points, 12).isApprox(NodePosition(model, state1, 3)));
+  EXPECT_TRUE(PointAt(points, 13).isApprox(NodePosition(model, state1, b.first_node)));
+  EXPECT_TRUE(PointAt(points, 21).isApprox(NodePosition(model, state1, b.first_node + 2)));
   // An interior sample follows the Hermite interpolation.
   EXPECT_TRUE(PointAt(points, 6).isApprox(model.Interpolate({1, 0.5}, state1.q)));
 
@@ -332,7 +332,7 @@ TEST(SummaryWriter, WritesCountersEnergiesAndFinalProbeValues) {
 TEST(SummaryWriter, FailedRunWritesNullForNonFiniteNumbers) {
   const Model model = MakeModel();
   State state = MakeDeformedState(model, 0.3);
-  state.q[Model::NodeDof(model.LocateCableNode(0, 1.0))] = kNaN;  // tip.x
+  state.q[model.NodePositionDof(model.LocateCableNode(0, 1.0))] = kNaN;  // tip.x
   RunSummary summary = MakeSummary();
   summary.completed = false;
   summary.message = "Newton did not converge at t = 0.3 s";

@@ -232,8 +232,8 @@ TEST(SceneLoaderTest, ReadsPointsConstraintsLoadsAndProbes) {
   const std::vector<bool>& fixed = model.fixed();
   EXPECT_EQ(std::count(fixed.begin(), fixed.end(), true), 5);
   for (int k = 0; k < 3; ++k) EXPECT_TRUE(fixed[k]);  // pin: r of node 0
-  EXPECT_TRUE(fixed[Model::NodeDof(8) + 1]);           // fix y of node 8
-  EXPECT_TRUE(fixed[Model::NodeDof(8) + 5]);           // fix dz of node 8
+  EXPECT_TRUE(fixed[model.NodePositionDof(8) + 1]);           // fix y of node 8
+  EXPECT_TRUE(fixed[model.NodeSlopeDof(8) + 2]);           // fix dz of node 8
 
   ASSERT_EQ(model.point_forces().size(), 1u);
   EXPECT_EQ(model.point_forces()[0].point.element, 8);
@@ -258,15 +258,15 @@ TEST(SceneLoaderTest, ReadsInitialVelocityAsVectorOrRigidMotion) {
   // The clamped node stays at rest; the tip moves with v.
   const VectorXd& v0 = translation.model.initial_velocities();
   EXPECT_EQ(v0.segment<3>(0), Vector3d::Zero());
-  EXPECT_EQ(v0.segment<3>(Model::NodeDof(16)), Vector3d(1, 2, 3));
+  EXPECT_EQ(v0.segment<3>(translation.model.NodePositionDof(16)), Vector3d(1, 2, 3));
 
   const Scene rotation = ParseScene(Cantilever(
       "    section: bar\n",
       "    section: bar\n    initial_velocity: {angular: [0, 0, 2], center: [0.5, 0, 0]}\n"));
   // ṙ = ω × (r − c) at the tip r = (1, 0, 0): (0, 0, 2) × (0.5, 0, 0) = (0, 1, 0).
   const VectorXd& w0 = rotation.model.initial_velocities();
-  EXPECT_TRUE(w0.segment<3>(Model::NodeDof(16)).isApprox(Vector3d(0, 1, 0)));
-  EXPECT_TRUE(w0.segment<3>(Model::NodeDof(16) + 3).isApprox(Vector3d(0, 2, 0)));
+  EXPECT_TRUE(w0.segment<3>(rotation.model.NodePositionDof(16)).isApprox(Vector3d(0, 1, 0)));
+  EXPECT_TRUE(w0.segment<3>(rotation.model.NodeSlopeDof(16)).isApprox(Vector3d(0, 2, 0)));
 }
 
 TEST(SceneLoaderTest, LoadsTheExampleFiles) {
