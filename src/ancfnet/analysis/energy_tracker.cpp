@@ -1,5 +1,7 @@
 #include "ancfnet/analysis/energy_tracker.hpp"
 
+#include "ancfnet/assembly/link_forces.hpp"
+
 namespace ancfnet {
 
 double CalcKineticEnergy(const Model& model, const Workspace& ws, const VectorXd& v) {
@@ -17,7 +19,7 @@ double CalcStrainEnergy(const Model& model, const VectorXd& q) {
   double energy = 0.0;
   for (const CableElement& element : model.elements())
     energy += CalcCableStrainEnergy(element.parameters, model.Gather(element, q));
-  return energy;
+  return energy + CalcLinkEnergy(model, q);
 }
 
 EnergyTracker::EnergyTracker(const Model& model, const Workspace& ws, const VectorXd& q,

@@ -10,7 +10,7 @@ namespace ancfnet {
 
 /// Kinetic energy ½ Σ v_eᵀ M_e v_e (J).
 double CalcKineticEnergy(const Model& model, const Workspace& ws, const VectorXd& v);
-/// Strain energy Σ U_e(q) (J).
+/// Strain energy Σ U_e(q) of the cable elements plus the energy stored in the links (J).
 double CalcStrainEnergy(const Model& model, const VectorXd& q);
 
 /// Accumulates the work of the applied loads W = ∫ Q_applied · dq and the energy dissipated by

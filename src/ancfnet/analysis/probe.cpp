@@ -15,13 +15,13 @@ std::vector<std::string> ProbeColumns(const Probe& probe) {
   return {};
 }
 
-void EvaluateProbe(const Probe& probe, const Model& model, const State& state,
+void EvaluateProbe(const Probe& probe, const Model& /*model*/, const State& state,
                    const EnergyAccount& energy, std::vector<double>* values) {
   switch (probe.quantity) {
     case ProbeQuantity::kPosition:
     case ProbeQuantity::kVelocity: {
       const VectorXd& x = probe.quantity == ProbeQuantity::kPosition ? state.q : state.v;
-      const Vector3d p = model.Interpolate(probe.point, x);
+      const Vector3d p = Model::Locate(probe.point, x);
       values->insert(values->end(), {p.x(), p.y(), p.z()});
       break;
     }

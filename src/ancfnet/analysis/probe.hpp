@@ -12,12 +12,12 @@ namespace ancfnet {
 
 enum class ProbeQuantity { kPosition, kVelocity, kEnergy };
 
-/// A named probe. Position and velocity probes read a material point; energy probes read the
-/// whole system (their point is unused).
+/// A named probe. Position and velocity probes read a point (a cable material point or a point
+/// mass); energy probes read the whole system (their point is unused).
 struct Probe {
   std::string name;
   ProbeQuantity quantity = ProbeQuantity::kPosition;
-  MaterialPoint point;
+  PointLocation point;
 };
 
 /// Column names of a probe: NAME.x/y/z, NAME.vx/vy/vz, or NAME.kinetic, NAME.strain,

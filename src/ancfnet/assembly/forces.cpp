@@ -1,5 +1,6 @@
 #include "ancfnet/assembly/forces.hpp"
 
+#include "ancfnet/assembly/link_forces.hpp"
 #include "ancfnet/elements/hermite_shape.hpp"
 
 namespace ancfnet {
@@ -52,6 +53,7 @@ void CalcInternalForces(const Model& model, const VectorXd& q, const VectorXd& v
     ScatterAdd(elements[e], ws.element_force[e], &ws.internal_force);
     ScatterAdd(elements[e], ws.element_viscous_force[e], &ws.viscous_force);
   }
+  AddLinkForces(model, q, v, ws);
 }
 
 void CalcExternalForces(const Model& model, const VectorXd& q, double load_factor, Workspace& ws) {
@@ -94,6 +96,8 @@ void AssembleIterationMatrix(const Model& model, const VectorXd& q, const Vector
     if (weights.mass != 0.0) matrix->AddElementBlock(e, ws.element_mass[e], weights.mass);
     if (need_damping) matrix->AddElementBlock(e, ws.element_damping[e], weights.damping);
   }
+  AddLinkForces(model, q, v, ws);
+  AddLinkJacobians(model, q, v, weights, matrix);
   if (weights.mass != 0.0) AddPointMassMatrix(model, weights.mass, matrix);
   // Point moments depend on the slope: −c_K λ ∂Q_ext/∂q.
   for (const PointMoment& load : model.point_moments()) {

@@ -27,8 +27,7 @@ std::vector<Index> GroupCoordinates(const std::vector<Index>& blocks) {
 
 }  // namespace
 
-SystemMatrix::SystemMatrix(const Model& model, const DofMap& dofs,
-                           const std::vector<std::vector<Index>>& extra_groups)
+SystemMatrix::SystemMatrix(const Model& model, const DofMap& dofs)
     : dofs_(&dofs),
       num_elements_(static_cast<Index>(model.elements().size())),
       num_point_masses_(static_cast<Index>(model.point_masses().size())) {
@@ -36,7 +35,12 @@ SystemMatrix::SystemMatrix(const Model& model, const DofMap& dofs,
   for (const CableElement& element : model.elements())
     blocks.push_back({element.dofs[0], element.dofs[3], element.dofs[6], element.dofs[9]});
   for (const PointMass& point : model.point_masses()) blocks.push_back({point.dof});
-  blocks.insert(blocks.end(), extra_groups.begin(), extra_groups.end());
+  for (const SpringDamperLink& link : model.links()) {
+    std::vector<Index> group;
+    for (const PointLocation* point : {&link.first, &link.second})
+      for (int b = 0; b < point->num_blocks; ++b) group.push_back(point->dof[b]);
+    blocks.push_back(group);
+  }
 
   std::vector<Eigen::Triplet<double, int>> triplets;
   for (const auto& group : blocks) {
@@ -88,8 +92,8 @@ void SystemMatrix::AddPointMassBlock(Index point, const Matrix3d& block, double 
   AddGroupBlock(groups_[num_elements_ + point], 0, 0, block, scale);
 }
 
-void SystemMatrix::AddExtraBlock(Index group, int i, int j, const Matrix3d& block, double scale) {
-  AddGroupBlock(groups_[num_elements_ + num_point_masses_ + group], i, j, block, scale);
+void SystemMatrix::AddLinkBlock(Index link, int i, int j, const Matrix3d& block, double scale) {
+  AddGroupBlock(groups_[num_elements_ + num_point_masses_ + link], i, j, block, scale);
 }
 
 void SystemMatrix::AddBlock3(Index row, Index col, const Matrix3d& block, double scale) {

@@ -12,14 +12,12 @@ namespace ancfnet {
 class Model;
 
 /// The couplings are groups of 3-coordinate blocks whose coordinates interact: each cable element
-/// (its blocks r_A, r'_A, r_B, r'_B), each point mass (one block), and each extra group added by
-/// later force elements (a spring-damper couples the blocks of its two points).
+/// (its blocks r_A, r'_A, r_B, r'_B), each point mass (one block), and each spring-damper link
+/// (the blocks of its first point, then of its second).
 class SystemMatrix {
  public:
-  /// Pattern of the model's element and point-mass couplings plus `extra_groups` (each a list
-  /// of first coordinates of 3-blocks), between unknowns of `dofs`; values zero.
-  SystemMatrix(const Model& model, const DofMap& dofs,
-               const std::vector<std::vector<Index>>& extra_groups = {});
+  /// Pattern of the model's couplings between unknowns of `dofs`; values zero.
+  SystemMatrix(const Model& model, const DofMap& dofs);
 
   const SparseMatrixd& matrix() const { return matrix_; }
   void SetZero();
@@ -28,8 +26,9 @@ class SystemMatrix {
   void AddElementBlock(Index element, const Matrix12d& block, double scale = 1.0);
   /// Adds scale · block to the 3×3 diagonal block of point mass `point`.
   void AddPointMassBlock(Index point, const Matrix3d& block, double scale = 1.0);
-  /// Adds scale · block to the 3×3 block (row block i, column block j) of extra group `group`.
-  void AddExtraBlock(Index group, int i, int j, const Matrix3d& block, double scale = 1.0);
+  /// Adds scale · block to the 3×3 block (row block i, column block j) of link `link`, its
+  /// blocks numbered first point's then second point's.
+  void AddLinkBlock(Index link, int i, int j, const Matrix3d& block, double scale = 1.0);
   /// Adds scale · block to the 3×3 block of rows starting at coordinate `row`, columns at `col`
   /// (both inside one coupling group). Searches the pattern: for rare terms only.
   void AddBlock3(Index row, Index col, const Matrix3d& block, double scale = 1.0);
@@ -43,7 +42,7 @@ class SystemMatrix {
 
   const DofMap* dofs_;
   SparseMatrixd matrix_;
-  std::vector<Group> groups_;  // elements, then point masses, then extra groups
+  std::vector<Group> groups_;  // elements, then point masses, then links
   Index num_elements_ = 0;
   Index num_point_masses_ = 0;
   // Index in matrix_.valuePtr() of each group entry, or −1 when its row or column is fixed.

@@ -202,8 +202,7 @@ std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model) {
     if (!whole_system) {
       const YamlValue at = map.Get("at");
       const CablePointRef point = ReadPoint(at);
-      probe.point = at.Locate(
-          [&] { return model.LocateCablePoint(model.FindCable(point.cable), point.s); });
+      probe.point = at.Locate([&] { return model.LocatePoint(point.cable, point.s); });
     }
     probes.push_back(std::move(probe));
   }

@@ -63,4 +63,28 @@ Vector3d Model::Interpolate(const MaterialPoint& point, const VectorXd& x) const
   return InterpolatePosition(Gather(element, x), shape.s);
 }
 
+Vector3d Model::Locate(const PointLocation& point, const VectorXd& x) {
+  Vector3d r = Vector3d::Zero();
+  for (int b = 0; b < point.num_blocks; ++b) r += point.weight[b] * x.segment<3>(point.dof[b]);
+  return r;
+}
+
+PointLocation Model::LocateMaterialPoint(const MaterialPoint& point) const {
+  const CableElement& element = elements_[point.element];
+  const HermiteShape shape = CalcHermiteShape(point.xi, element.parameters.length);
+  PointLocation location;
+  location.num_blocks = 4;
+  for (int b = 0; b < 4; ++b) {
+    location.dof[b] = element.dofs[3 * b];
+    location.weight[b] = shape.s[b];
+  }
+  return location;
+}
+
+PointLocation Model::LocatePoint(const std::string& name, double s) const {
+  const Index mass = FindPointMass(name);
+  if (mass >= 0) return {.num_blocks = 1, .dof = {point_masses_[mass].dof}, .weight = {1.0}};
+  return LocateMaterialPoint(LocateCablePoint(FindCable(name), s));
+}
+
 }  // namespace ancfnet

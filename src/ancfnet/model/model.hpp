@@ -8,6 +8,7 @@
 
 #include "ancfnet/common/types.hpp"
 #include "ancfnet/elements/ancf_cable.hpp"
+#include "ancfnet/forces/connection_law.hpp"
 #include "ancfnet/model/material.hpp"
 
 namespace ancfnet {
@@ -33,7 +34,7 @@ struct CableNode {
 /// A concentrated mass with three position coordinates: a knot, a bullet, any lumped mass.
 struct PointMass {
   std::string name;
-  double mass = 0.0;  ///< kg, > 0
+  double mass = 0.0;  ///< kg, ≥ 0
   Index dof = 0;      ///< first of its 3 coordinates
 };
 
@@ -48,6 +49,37 @@ struct CableElement {
 struct MaterialPoint {
   Index element = 0;
   double xi = 0.0;
+};
+
+/// A point whose position is a fixed combination of 3-coordinate blocks, r = Σ_b w_b q_b: a cable
+/// material point (its element's blocks r_A, r'_A, r_B, r'_B weighted by the Hermite shape
+/// functions) or a point mass (its one block, weight 1).
+struct PointLocation {
+  int num_blocks = 0;
+  std::array<Index, 4> dof{};      ///< first coordinate of each block
+  std::array<double, 4> weight{};  ///< w_b
+};
+
+/// A point-to-point spring-damper (a compliant knot's link to a thread end, a tether, any
+/// connection): force T(e, ė) along the line of its two points, e = |r₂ − r₁| − L₀
+/// (forces/spring_damper.hpp).
+struct SpringDamperLink {
+  std::string name;
+  ConnectionLaw law;
+  double natural_length = 0.0;  ///< L₀ (m), ≥ 0; 0: a zero-length link with isotropic damping
+  PointLocation first;
+  PointLocation second;
+};
+
+/// A net as built by AddNet (model/net_builder.hpp): which point masses are its knots and which
+/// cables its threads, for net metrics and outputs.
+struct Net {
+  std::string name;
+  std::vector<Index> knots;      ///< point masses, in the order of the net's topology
+  std::vector<Index> threads;    ///< cables
+  std::vector<Index> perimeter;  ///< point masses around the mouth, in order
+  std::vector<Index> corners;    ///< point masses
+  Vector3d axis = Vector3d::UnitZ();  ///< launch axis: the normal of the net's plane
 };
 
 /// Force fixed in space (N) at a material point; scaled by the load factor in static analyses.
@@ -80,6 +112,8 @@ class Model {
   const std::vector<Cable>& cables() const { return cables_; }
   const std::vector<CableNode>& nodes() const { return nodes_; }
   const std::vector<PointMass>& point_masses() const { return point_masses_; }
+  const std::vector<SpringDamperLink>& links() const { return links_; }
+  const std::vector<Net>& nets() const { return nets_; }
   const std::vector<CableElement>& elements() const { return elements_; }
   const std::vector<PointForce>& point_forces() const { return point_forces_; }
   const std::vector<PointMoment>& point_moments() const { return point_moments_; }
@@ -107,6 +141,13 @@ class Model {
   Vector12d Gather(const CableElement& element, const VectorXd& x) const;
   /// Position (or, given velocities, velocity) of a material point.
   Vector3d Interpolate(const MaterialPoint& point, const VectorXd& x) const;
+  /// Position (or velocity) of a located point: Σ_b w_b x_b.
+  static Vector3d Locate(const PointLocation& point, const VectorXd& x);
+  /// The blocks and weights of a cable material point.
+  PointLocation LocateMaterialPoint(const MaterialPoint& point) const;
+  /// The point mass named `name`, or else the point at fraction s of the cable named `name`;
+  /// throws InputError when neither exists.
+  PointLocation LocatePoint(const std::string& name, double s) const;
 
  private:
   friend class ModelBuilder;
@@ -114,6 +155,8 @@ class Model {
   std::vector<CableNode> nodes_;
   std::vector<CableElement> elements_;
   std::vector<PointMass> point_masses_;
+  std::vector<SpringDamperLink> links_;
+  std::vector<Net> nets_;
   std::vector<PointForce> point_forces_;
   std::vector<PointMoment> point_moments_;
   std::vector<DistributedLoad> distributed_loads_;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <fmt/format.h>
 
 #include "ancfnet/common/error.hpp"
@@ -141,7 +142,7 @@ Index ModelBuilder::AddCable(const CableSpec& spec) {
 Index ModelBuilder::AddPointMass(const std::string& name, double mass, const Vector3d& position,
                                  const Vector3d& velocity) {
   CheckNameIsFree(name);
-  RequirePositive(mass, "point mass");
+  RequireNonNegative(mass, "point mass");
   RequireFinite(position, "point mass position");
   RequireFinite(velocity, "point mass velocity");
   const Index dof = AddCoordinates(position);
@@ -150,10 +151,31 @@ Index ModelBuilder::AddPointMass(const std::string& name, double mass, const Vec
   return static_cast<Index>(model_.point_masses_.size()) - 1;
 }
 
+void ModelBuilder::SetPointMassVelocity(const std::string& name, const Vector3d& velocity) {
+  RequireFinite(velocity, "point mass velocity");
+  const Index mass = model_.FindPointMass(name);
+  if (mass < 0) throw InputError(fmt::format("no point mass named '{}'", name));
+  model_.initial_velocities_.segment<3>(model_.point_masses_[mass].dof) = velocity;
+}
+
 void ModelBuilder::FixPointMass(const std::string& name) {
   const Index mass = model_.FindPointMass(name);
   if (mass < 0) throw InputError(fmt::format("no point mass named '{}'", name));
   for (int k = 0; k < 3; ++k) model_.fixed_[model_.point_masses_[mass].dof + k] = true;
+}
+
+void ModelBuilder::AddSpringDamper(const std::string& name, const CablePointRef& first,
+                                   const CablePointRef& second, const ConnectionLaw& law,
+                                   std::optional<double> natural_length) {
+  ValidateConnectionLaw(law);
+  SpringDamperLink link{.name = name, .law = law,
+                        .first = model_.LocatePoint(first.cable, first.s),
+                        .second = model_.LocatePoint(second.cable, second.s)};
+  const double distance = (Model::Locate(link.second, model_.initial_positions_) -
+                           Model::Locate(link.first, model_.initial_positions_)).norm();
+  link.natural_length = natural_length.value_or(distance);
+  RequireNonNegative(link.natural_length, "natural length of a spring-damper");
+  model_.links_.push_back(std::move(link));
 }
 
 Index ModelBuilder::LocateNode(const CablePointRef& at) const {
@@ -207,6 +229,12 @@ void ModelBuilder::SetInitialVelocity(const std::string& cable_name, const Vecto
         velocity + angular_velocity.cross(r - center);
     model_.initial_velocities_.segment<3>(node.slope_dof) = angular_velocity.cross(slope);
   }
+}
+
+void ModelBuilder::AddNetDescription(const Net& net) {
+  for (const Net& other : model_.nets_)
+    if (other.name == net.name) throw InputError(fmt::format("two nets are named '{}'", net.name));
+  model_.nets_.push_back(net);
 }
 
 Model ModelBuilder::Build() const {

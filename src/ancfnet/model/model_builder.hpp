@@ -3,6 +3,7 @@
 /// Python bindings go through it, so every check on the input lives here once.
 
 #include <array>
+#include <optional>
 #include <string>
 
 #include "ancfnet/model/model.hpp"
@@ -25,6 +26,7 @@ struct CableSpec {
 };
 
 /// A point of a named cable at fraction s ∈ [0, 1] of its reference length.
+/// (Where a point mass is accepted, `cable` may also name a point mass; s is then ignored.)
 struct CablePointRef {
   std::string cable;
   double s = 0.0;
@@ -41,12 +43,20 @@ class ModelBuilder {
   void SetGravity(const Vector3d& gravity);
   /// Adds a cable; returns its index. Names must be unique and non-empty.
   Index AddCable(const CableSpec& spec);
-  /// Adds a point mass m > 0 (kg) at `position` (m) moving at `velocity` (m/s); returns its
-  /// index. Names are unique among point masses and cables.
+  /// Adds a point mass m ≥ 0 (kg) at `position` (m) moving at `velocity` (m/s); returns its
+  /// index. Names are unique among point masses and cables. A massless point (an ideal knot
+  /// without a knot mass) must have cables attached, or the mass matrix is singular.
   Index AddPointMass(const std::string& name, double mass, const Vector3d& position,
                      const Vector3d& velocity = Vector3d::Zero());
+  /// Sets the initial velocity (m/s) of a point mass.
+  void SetPointMassVelocity(const std::string& name, const Vector3d& velocity);
   /// Fixes the position of a point mass.
   void FixPointMass(const std::string& name);
+  /// Adds a spring-damper between two points, each a point mass (named by `cable`, s ignored) or
+  /// a cable point. Its natural length defaults to the initial distance of the points.
+  void AddSpringDamper(const std::string& name, const CablePointRef& first,
+                       const CablePointRef& second, const ConnectionLaw& law,
+                       std::optional<double> natural_length = std::nullopt);
   /// Fixes position and slope of the node at `at` (which must be a node).
   void AddClamp(const CablePointRef& at);
   /// Fixes the position of the node at `at`; the slope stays free.
@@ -63,6 +73,8 @@ class ModelBuilder {
   void SetInitialVelocity(const std::string& cable, const Vector3d& velocity,
                           const Vector3d& angular_velocity = Vector3d::Zero(),
                           const Vector3d& center = Vector3d::Zero());
+  /// Records a net's description (its knots, threads, perimeter); AddNet calls it.
+  void AddNetDescription(const Net& net);
   /// The finished model. Throws InputError when it has no cable.
   Model Build() const;
 

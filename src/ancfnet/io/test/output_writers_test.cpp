@@ -50,8 +50,8 @@ EnergyAccount MakeEnergy() {
 }
 
 std::vector<Probe> MakeProbes(const Model& model) {
-  return {{"tip", ProbeQuantity::kPosition, model.LocateCablePoint(0, 1.0)},
-          {"mid", ProbeQuantity::kVelocity, model.LocateCablePoint(1, 0.3)},
+  return {{"tip", ProbeQuantity::kPosition, model.LocateMaterialPoint(model.LocateCablePoint(0, 1.0))},
+          {"mid", ProbeQuantity::kVelocity, model.LocateMaterialPoint(model.LocateCablePoint(1, 0.3))},
           {"e", ProbeQuantity::kEnergy, {}}};
 }
 
@@ -107,8 +107,8 @@ TEST(ProbeCsvWriter, WritesHeaderAndFullPrecisionRows) {
   const std::vector<double> row = ParseCsvRow(lines[2]);
   ASSERT_EQ(row.size(), 12u);
   EXPECT_EQ(row[0], 0.1);
-  const Vector3d tip = model.Interpolate(probes[0].point, state1.q);
-  const Vector3d mid = model.Interpolate(probes[1].point, state1.v);
+  const Vector3d tip = Model::Locate(probes[0].point, state1.q);
+  const Vector3d mid = Model::Locate(probes[1].point, state1.v);
   for (int i = 0; i < 3; ++i) {
     EXPECT_EQ(row[1 + i], tip[i]);  // bit-exact: the text reads back to the same double
     EXPECT_EQ(row[4 + i], mid[i]);
@@ -314,8 +314,8 @@ TEST(SummaryWriter, WritesCountersEnergiesAndFinalProbeValues) {
   EXPECT_EQ(energy["dissipated"], 1e-3);
   EXPECT_EQ(energy["balance"], summary.energy.Balance());
 
-  const Vector3d tip = model.Interpolate(probes[0].point, state.q);
-  const Vector3d mid = model.Interpolate(probes[1].point, state.v);
+  const Vector3d tip = Model::Locate(probes[0].point, state.q);
+  const Vector3d mid = Model::Locate(probes[1].point, state.v);
   const nlohmann::json& values = json["probes"];
   ASSERT_EQ(values.size(), 3u);
   ASSERT_EQ(values["tip"]["position"].size(), 3u);

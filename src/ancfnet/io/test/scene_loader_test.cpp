@@ -104,8 +104,11 @@ TEST(SceneLoaderTest, CantileverHasTheRightProbesAndSettings) {
   ASSERT_EQ(scene.probes.size(), 1u);
   EXPECT_EQ(scene.probes[0].name, "tip");
   EXPECT_EQ(scene.probes[0].quantity, ProbeQuantity::kPosition);
-  EXPECT_EQ(scene.probes[0].point.element, 15);
-  EXPECT_DOUBLE_EQ(scene.probes[0].point.xi, 1.0);
+  // The tip: the end of element 15, at (1, 0, 0).
+  EXPECT_EQ(scene.probes[0].point.dof[2], scene.model.elements()[15].dofs[6]);
+  EXPECT_DOUBLE_EQ(scene.probes[0].point.weight[2], 1.0);
+  EXPECT_TRUE(Model::Locate(scene.probes[0].point, scene.model.initial_positions())
+                  .isApprox(Vector3d(1, 0, 0)));
 
   const AnalysisSettings defaults;
   EXPECT_EQ(scene.analysis.type, AnalysisType::kStatic);
@@ -246,8 +249,9 @@ TEST(SceneLoaderTest, ReadsPointsConstraintsLoadsAndProbes) {
 
   ASSERT_EQ(scene.probes.size(), 2u);
   EXPECT_EQ(scene.probes[0].quantity, ProbeQuantity::kVelocity);
-  EXPECT_EQ(scene.probes[0].point.element, 4);
-  EXPECT_DOUBLE_EQ(scene.probes[0].point.xi, 0.0);
+  // The start of element 4, node 4 of 16.
+  EXPECT_EQ(scene.probes[0].point.dof[0], model.elements()[4].dofs[0]);
+  EXPECT_DOUBLE_EQ(scene.probes[0].point.weight[0], 1.0);
   EXPECT_EQ(scene.probes[1].name, "e");
   EXPECT_EQ(scene.probes[1].quantity, ProbeQuantity::kEnergy);
 }

@@ -44,7 +44,7 @@ TEST(PointMassKnot, CableEndMustBeAtItsKnot) {
   EXPECT_THROW(builder.AddCable({.name = "knot", .start = Vector3d::Zero(),
                                  .end = Vector3d(1.0, 0.0, 0.0), .properties = Cord()}),
                InputError);
-  EXPECT_THROW(builder.AddPointMass("m", 0.0, Vector3d::Zero()), InputError);
+  EXPECT_THROW(builder.AddPointMass("m", -1.0, Vector3d::Zero()), InputError);
 }
 
 // Elongation of a hanging cable of length L under its weight and an end mass m. At material
