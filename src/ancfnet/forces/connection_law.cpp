@@ -47,14 +47,14 @@ double IntegrateTable(const std::vector<ForceTablePoint>& table, double a, doubl
 
 void RequirePositive(double value, const char* what) {
   if (!(std::isfinite(value) && value > 0.0))
-    throw InputError(fmt::format("connection law: {} must be positive and finite (got {})", what,
-                                 value));
+    throw InputError(
+        fmt::format("connection law: {} must be positive and finite (got {})", what, value));
 }
 
 void RequireNonNegative(double value, const char* what) {
   if (!(std::isfinite(value) && value >= 0.0))
-    throw InputError(fmt::format("connection law: {} must be non-negative and finite (got {})",
-                                 what, value));
+    throw InputError(
+        fmt::format("connection law: {} must be non-negative and finite (got {})", what, value));
 }
 
 void ValidateTable(const std::vector<ForceTablePoint>& table) {
@@ -107,8 +107,8 @@ DampingTerms ConnectionLaw::CalcDamping(double e) const {
 ConnectionForce ConnectionLaw::Evaluate(double e, double e_dot) const {
   const SpringTerms s = CalcSpring(e);
   const DampingTerms b = CalcDamping(e);
-  const ConnectionForce t{s.force + b.coefficient * e_dot,
-                          s.stiffness + b.dcoefficient_de * e_dot, b.coefficient};
+  const ConnectionForce t{s.force + b.coefficient * e_dot, s.stiffness + b.dcoefficient_de * e_dot,
+                          b.coefficient};
   // A tension-only connection never pushes, even while it shortens quickly.
   if (spring == SpringKind::kTensionOnly && (e <= gap || t.force <= 0.0)) return {};
   return t;

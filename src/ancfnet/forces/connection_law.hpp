@@ -41,7 +41,7 @@ struct SpringTerms {
 
 /// The damping coefficient at one elongation.
 struct DampingTerms {
-  double coefficient = 0.0;     ///< b(e) (N s/m), ≥ 0
+  double coefficient = 0.0;      ///< b(e) (N s/m), ≥ 0
   double dcoefficient_de = 0.0;  ///< db/de (N s/m²)
 };
 

@@ -79,10 +79,10 @@ void ValidateSpringDamper(const ConnectionLaw& law, double natural_length) {
   for (const ForceTablePoint& point : law.table) scale = std::max(scale, std::abs(point.force));
   const double pretension = law.CalcSpring(0.0).force;
   if (std::abs(pretension) > kPretensionTolerance * scale)
-    throw InputError(fmt::format(
-        "spring-damper: a zero-length link needs a force table with zero force at zero "
-        "elongation (got {} N)",
-        pretension));
+    throw InputError(
+        fmt::format("spring-damper: a zero-length link needs a force table with zero force at zero "
+                    "elongation (got {} N)",
+                    pretension));
 }
 
 SpringDamperResult CalcSpringDamper(const ConnectionLaw& law, double natural_length,

@@ -28,11 +28,11 @@ struct SpringDamperResult {
 /// L0 > 0 (a spring-damper along the line of its points): e = ρ − L0, n = d/ρ, ė = n·ḋ,
 ///   f2 = −T(e, ė) n,
 /// with the regularised length ρ = √(|d|² + ε²), ε = 1e-8 L0. ρ differs from |d| by the relative
-/// amount ε²/(2|d|²): under 5e-17 (rounding) for |d| ≥ L0, under 5e-13 for |d| ≥ L0/100. The
-/// regularisation keeps everything finite as |d| → 0: at d = 0 the force
-/// is zero (an unstable equilibrium of a crushed spring, whose direction is undefined) and the
-/// Jacobian ~ T/ε is large but finite. U = ∫₀ᵉ T_s, and without damping f2 = −∂U/∂d exactly.
-/// Rigid rotation of the pair (ḋ ⟂ d) gives ė = 0: damping dissipates nothing.
+/// amount ε²/(2|d|²): under 5e-17 (rounding) for |d| ≥ L0, under 5e-13 for |d| ≥ L0/100. It
+/// keeps everything finite as |d| → 0: at d = 0 the force is zero (an unstable equilibrium of a
+/// crushed spring, whose direction is undefined) and the Jacobian ~ T/ε is large but finite.
+/// U = ∫₀ᵉ T_s, and without damping f2 = −∂U/∂d exactly. Rigid rotation of the pair (ḋ ⟂ d)
+/// gives ė = 0: damping dissipates nothing.
 ///
 /// L0 = 0 (a knot link, the seed paper's T_i = K_i(δ_i) δ_i + b_i δ̇_i with δ a vector): with
 /// ρ = |d| and the secant stiffness K(ρ) = T_s(ρ)/ρ,

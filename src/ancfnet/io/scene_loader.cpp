@@ -12,6 +12,7 @@
 
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/io/closest_name.hpp"
+#include "ancfnet/io/connection_law_reader.hpp"
 #include "ancfnet/io/scene_settings_reader.hpp"
 #include "ancfnet/io/yaml_reader.hpp"
 #include "ancfnet/model/model_builder.hpp"
@@ -79,21 +80,54 @@ NamedList<T> ReadNamed(const YamlMap& scene, std::string_view key, Read read) {
   return list;
 }
 
-// POINT: "CABLE.start", "CABLE.end" (split at the last '.'), or {cable: NAME, s: FRACTION}.
-CablePointRef ReadPoint(const YamlValue& value) {
-  constexpr const char* kForms = "a point CABLE.start, CABLE.end or {cable: NAME, s: FRACTION}";
+// POINT: "CABLE.start", "CABLE.end" (split at the last '.'), {cable: NAME, s: FRACTION}, or the
+// name of a point mass in `point_masses`.
+CablePointRef ReadPoint(const YamlValue& value, const std::vector<std::string>& point_masses = {}) {
+  const std::string forms =
+      std::string("a point CABLE.start, CABLE.end or {cable: NAME, s: FRACTION}") +
+      (point_masses.empty() ? "" : ", or a point mass");
   if (value.IsMap()) {
     const YamlMap map = value.AsMap();
     map.CheckKeys({"cable", "s"});
     return {map.Get("cable").AsString(), map.Get("s").AsNumberIn(0.0, 1.0)};
   }
-  if (!value.IsScalar()) value.FailExpected(kForms);
+  if (!value.IsScalar()) value.FailExpected(forms);
   const std::string text = value.AsString();
+  for (const std::string& name : point_masses)
+    if (name == text) return {text, 0.0};
   const std::size_t dot = text.rfind('.');
-  if (dot == std::string::npos || dot == 0) value.FailExpected(kForms);
+  if (dot == std::string::npos || dot == 0) value.FailExpected(forms);
   const std::string end = text.substr(dot + 1);
-  if (end != "start" && end != "end") value.FailExpected(kForms);
+  if (end != "start" && end != "end") value.FailExpected(forms);
   return {text.substr(0, dot), end == "start" ? 0.0 : 1.0};
+}
+
+// point_masses: - {name, mass, position, velocity, fixed}
+void ReadPointMass(const YamlValue& item, ModelBuilder* builder,
+                   std::vector<std::string>* names) {
+  const YamlMap map = item.AsMap();
+  map.CheckKeys({"name", "mass", "position", "velocity", "fixed"});
+  const std::string name = map.Get("name").AsString();
+  const double mass = map.Get("mass").AsPositive();
+  const Vector3d position = map.Get("position").AsVector3();
+  const Vector3d velocity = map.Find("velocity") ? map.Get("velocity").AsVector3() : Vector3d::Zero();
+  item.Locate([&] { builder->AddPointMass(name, mass, position, velocity); });
+  if (auto v = map.Find("fixed"); v && v->AsBool()) builder->FixPointMass(name);
+  names->push_back(name);
+}
+
+// spring_dampers: - {name, from: POINT, to: POINT, law: LAW, natural_length}
+void ReadSpringDamper(const YamlValue& item, const std::vector<std::string>& point_masses,
+                      ModelBuilder* builder) {
+  const YamlMap map = item.AsMap();
+  map.CheckKeys({"name", "from", "to", "law", "natural_length"});
+  const std::string name = map.Get("name").AsString();
+  const CablePointRef from = ReadPoint(map.Get("from"), point_masses);
+  const CablePointRef to = ReadPoint(map.Get("to"), point_masses);
+  const ConnectionLaw law = ReadConnectionLaw(map.Get("law"));
+  std::optional<double> natural_length;
+  if (auto v = map.Find("natural_length")) natural_length = v->AsNonNegative();
+  item.Locate([&] { builder->AddSpringDamper(name, from, to, law, natural_length); });
 }
 
 // initial_velocity: [vx, vy, vz], or {linear: v, angular: ω, center: c} for v + ω × (r − c).
@@ -182,7 +216,8 @@ void ReadLoad(const YamlValue& item, ModelBuilder* builder) {
 }
 
 // Probes are read once the model is built: their points resolve to material points.
-std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model) {
+std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
+                              const std::vector<std::string>& point_masses) {
   std::vector<Probe> probes;
   for (const YamlValue& item : list.AsList()) {
     const YamlMap map = item.AsMap();
@@ -201,7 +236,7 @@ std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model) {
       if (other.name == probe.name) name.Fail(fmt::format("two probes are named '{}'", probe.name));
     if (!whole_system) {
       const YamlValue at = map.Get("at");
-      const CablePointRef point = ReadPoint(at);
+      const CablePointRef point = ReadPoint(at, point_masses);
       probe.point = at.Locate([&] { return model.LocatePoint(point.cable, point.s); });
     }
     probes.push_back(std::move(probe));
@@ -213,8 +248,8 @@ Scene ReadScene(const YamlValue& root) {
   if (root.node().IsNull())
     root.FailPlain("the scene is empty (expected a map with materials, sections and cables)");
   const YamlMap scene = root.AsMap();
-  scene.CheckKeys({"gravity", "materials", "sections", "cables", "constraints", "loads", "probes",
-                   "analysis", "output"});
+  scene.CheckKeys({"gravity", "materials", "sections", "point_masses", "cables", "spring_dampers",
+                   "constraints", "loads", "probes", "analysis", "output"});
   ModelBuilder builder;
   if (auto v = scene.Find("gravity")) {
     const Vector3d gravity = v->AsVector3();
@@ -223,8 +258,15 @@ Scene ReadScene(const YamlValue& root) {
   Library library;
   library.materials = ReadNamed<Material>(scene, "materials", ReadMaterial);
   library.sections = ReadNamed<Section>(scene, "sections", ReadSection);
-  for (const YamlValue& item : scene.Get("cables").AsList(/*non_empty=*/true))
-    ReadCable(item, library, &builder);
+  std::vector<std::string> point_masses;
+  if (auto v = scene.Find("point_masses"))
+    for (const YamlValue& item : v->AsList()) ReadPointMass(item, &builder, &point_masses);
+  // Cables are required unless the scene has point masses.
+  if (auto v = scene.Find("cables"); v || point_masses.empty())
+    for (const YamlValue& item : scene.Get("cables").AsList(/*non_empty=*/point_masses.empty()))
+      ReadCable(item, library, &builder);
+  if (auto v = scene.Find("spring_dampers"))
+    for (const YamlValue& item : v->AsList()) ReadSpringDamper(item, point_masses, &builder);
   if (auto v = scene.Find("constraints"))
     for (const YamlValue& item : v->AsList()) ReadConstraint(item, &builder);
   if (auto v = scene.Find("loads"))
@@ -232,7 +274,7 @@ Scene ReadScene(const YamlValue& root) {
 
   Scene result;
   result.model = root.Locate([&] { return builder.Build(); });
-  if (auto v = scene.Find("probes")) result.probes = ReadProbes(*v, result.model);
+  if (auto v = scene.Find("probes")) result.probes = ReadProbes(*v, result.model, point_masses);
   if (auto v = scene.Find("analysis")) result.analysis = ReadAnalysisSettings(*v);
   if (auto v = scene.Find("output")) result.output = ReadOutputSettings(*v);
   result.source = root.source();

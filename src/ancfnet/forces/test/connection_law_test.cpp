@@ -36,25 +36,24 @@ void ExpectDerivativesMatchFiniteDifferences(const ConnectionLaw& law, double e,
   const double h = 1e-7;
   const std::string where = "at e = " + std::to_string(e) + ", e_dot = " + std::to_string(e_dot);
   const ConnectionForce t = law.Evaluate(e, e_dot);
-  ExpectNearRelative(t.dforce_de,
-                     (law.Evaluate(e + h, e_dot).force - law.Evaluate(e - h, e_dot).force) /
-                         (2 * h),
-                     "dT/de " + where);
-  ExpectNearRelative(t.dforce_dedot,
-                     (law.Evaluate(e, e_dot + h).force - law.Evaluate(e, e_dot - h).force) /
-                         (2 * h),
-                     "dT/de_dot " + where);
+  ExpectNearRelative(
+      t.dforce_de, (law.Evaluate(e + h, e_dot).force - law.Evaluate(e - h, e_dot).force) / (2 * h),
+      "dT/de " + where);
+  ExpectNearRelative(
+      t.dforce_dedot,
+      (law.Evaluate(e, e_dot + h).force - law.Evaluate(e, e_dot - h).force) / (2 * h),
+      "dT/de_dot " + where);
   const SpringTerms s = law.CalcSpring(e);
-  ExpectNearRelative(s.stiffness, (law.CalcSpring(e + h).force - law.CalcSpring(e - h).force) /
-                                      (2 * h),
+  ExpectNearRelative(s.stiffness,
+                     (law.CalcSpring(e + h).force - law.CalcSpring(e - h).force) / (2 * h),
                      "dT_s/de " + where);
   ExpectNearRelative(s.curvature,
                      (law.CalcSpring(e + h).stiffness - law.CalcSpring(e - h).stiffness) / (2 * h),
                      "d2T_s/de2 " + where);
-  ExpectNearRelative(law.CalcDamping(e).dcoefficient_de,
-                     (law.CalcDamping(e + h).coefficient - law.CalcDamping(e - h).coefficient) /
-                         (2 * h),
-                     "db/de " + where);
+  ExpectNearRelative(
+      law.CalcDamping(e).dcoefficient_de,
+      (law.CalcDamping(e + h).coefficient - law.CalcDamping(e - h).coefficient) / (2 * h),
+      "db/de " + where);
 }
 
 TEST(ConnectionLaw, LinearValues) {
@@ -71,9 +70,9 @@ TEST(ConnectionLaw, PolynomialValues) {
   const ConnectionLaw law = MakePolynomialLaw(100.0, 1.0e5);
   const SpringTerms s = law.CalcSpring(0.02);
   EXPECT_DOUBLE_EQ(s.force, 100.0 * 0.02 + 1.0e5 * 8.0e-6);  // 2.8 N
-  EXPECT_DOUBLE_EQ(s.stiffness, 100.0 + 3.0e5 * 4.0e-4);   // 220 N/m
-  EXPECT_DOUBLE_EQ(s.curvature, 6.0e5 * 0.02);             // 12000 N/m²
-  EXPECT_DOUBLE_EQ(law.CalcSpring(-0.02).force, -2.8);     // odd in e
+  EXPECT_DOUBLE_EQ(s.stiffness, 100.0 + 3.0e5 * 4.0e-4);     // 220 N/m
+  EXPECT_DOUBLE_EQ(s.curvature, 6.0e5 * 0.02);               // 12000 N/m²
+  EXPECT_DOUBLE_EQ(law.CalcSpring(-0.02).force, -2.8);       // odd in e
   EXPECT_DOUBLE_EQ(law.CalcEnergy(0.02), 0.5 * 100.0 * 4.0e-4 + 0.25 * 1.0e5 * 1.6e-7);
 }
 
@@ -141,16 +140,17 @@ TEST(ConnectionLaw, EnergyIsTheIntegralOfTheSpringForce) {
 }
 
 TEST(ConnectionLaw, DerivativesMatchFiniteDifferences) {
-  const std::vector<ConnectionLaw> springs = {
-      MakeLinearLaw(200.0), MakeTensionOnlyLaw(100.0, 0.01), MakePolynomialLaw(100.0, 1.0e5),
-      MakePiecewiseLinearLaw(Table())};
+  const std::vector<ConnectionLaw> springs = {MakeLinearLaw(200.0), MakeTensionOnlyLaw(100.0, 0.01),
+                                              MakePolynomialLaw(100.0, 1.0e5),
+                                              MakePiecewiseLinearLaw(Table())};
   for (const ConnectionLaw& spring : springs) {
-    for (const ConnectionLaw& law :
-         {spring, WithConstantDamping(spring, 3.0), WithStiffnessProportionalDamping(spring, 0.02)}) {
+    for (const ConnectionLaw& law : {spring, WithConstantDamping(spring, 3.0),
+                                     WithStiffnessProportionalDamping(spring, 0.02)}) {
       // Away from the kinks (e = g, table points); tension-only laws taut and pulling.
       for (double e : {-0.025, -0.004, 0.015, 0.022, 0.045}) {
         if (spring.spring == SpringKind::kTensionOnly && e <= spring.gap) continue;
-        for (double e_dot : {-0.3, 0.0, 0.7}) ExpectDerivativesMatchFiniteDifferences(law, e, e_dot);
+        for (double e_dot : {-0.3, 0.0, 0.7})
+          ExpectDerivativesMatchFiniteDifferences(law, e, e_dot);
       }
     }
   }

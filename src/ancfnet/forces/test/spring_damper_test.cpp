@@ -12,9 +12,9 @@ namespace ancfnet {
 namespace {
 
 // Generic configurations: no symmetry to hide a transposed block or a sign.
-const Vector3d kD(0.53, -0.41, 0.37);        // |d| ≈ 0.766 m
-const Vector3d kDDot(0.21, 0.34, -0.17);     // m/s
-const Vector3d kOmega(0.3, -0.8, 1.1);       // rad/s
+const Vector3d kD(0.53, -0.41, 0.37);     // |d| ≈ 0.766 m
+const Vector3d kDDot(0.21, 0.34, -0.17);  // m/s
+const Vector3d kOmega(0.3, -0.8, 1.1);    // rad/s
 
 struct NamedLaw {
   std::string name;
@@ -24,8 +24,8 @@ struct NamedLaw {
 // Laws exercising every branch with a nonzero Jacobian; in kD's configurations with L0 = 0.6
 // (e ≈ 0.166 m) and L0 = 0 (e ≈ 0.766 m) every tension-only law is taut and pulling.
 std::vector<NamedLaw> Laws() {
-  const std::vector<ForceTablePoint> table = {
-      {-0.2, -30.0}, {0.0, 0.0}, {0.1, 12.0}, {0.3, 50.0}, {0.6, 70.0}, {0.9, 130.0}};
+  const std::vector<ForceTablePoint> table = {{-0.2, -30.0}, {0.0, 0.0},  {0.1, 12.0},
+                                              {0.3, 50.0},   {0.6, 70.0}, {0.9, 130.0}};
   return {
       {"linear, constant damping", WithConstantDamping(MakeLinearLaw(150.0), 4.0)},
       {"tension-only, constant damping", WithConstantDamping(MakeTensionOnlyLaw(150.0, 0.05), 4.0)},
@@ -50,10 +50,12 @@ void ExpectJacobiansMatchFiniteDifferences(const ConnectionLaw& law, double l0, 
     k_fd.col(j) = (Force(law, l0, d + step, d_dot) - Force(law, l0, d - step, d_dot)) / (2 * h);
     c_fd.col(j) = (Force(law, l0, d, d_dot + step) - Force(law, l0, d, d_dot - step)) / (2 * h);
   }
-  EXPECT_LT((r.stiffness - k_fd).norm(), 1e-6 * r.stiffness.norm())
-      << what << "\n" << r.stiffness << "\nfd\n" << k_fd;
-  EXPECT_LT((r.damping - c_fd).norm(), 1e-6 * r.damping.norm() + 1e-9)
-      << what << "\n" << r.damping << "\nfd\n" << c_fd;
+  EXPECT_LT((r.stiffness - k_fd).norm(), 1e-6 * r.stiffness.norm()) << what << "\n"
+                                                                    << r.stiffness << "\nfd\n"
+                                                                    << k_fd;
+  EXPECT_LT((r.damping - c_fd).norm(), 1e-6 * r.damping.norm() + 1e-9) << what << "\n"
+                                                                       << r.damping << "\nfd\n"
+                                                                       << c_fd;
 }
 
 void ExpectForceIsMinusEnergyGradient(const ConnectionLaw& law, double l0, const Vector3d& d,
@@ -95,7 +97,8 @@ TEST(SpringDamper, JacobiansMatchFiniteDifferencesWithNaturalLength) {
   // Compressed (e < 0): only laws that push.
   const ConnectionLaw linear = WithConstantDamping(MakeLinearLaw(150.0), 4.0);
   ExpectJacobiansMatchFiniteDifferences(linear, 1.1, kD, kDDot, "linear, compressed");
-  const ConnectionLaw poly = WithStiffnessProportionalDamping(MakePolynomialLaw(150.0, 900.0), 0.03);
+  const ConnectionLaw poly =
+      WithStiffnessProportionalDamping(MakePolynomialLaw(150.0, 900.0), 0.03);
   ExpectJacobiansMatchFiniteDifferences(poly, 1.1, kD, kDDot, "polynomial, compressed");
 }
 
@@ -156,8 +159,8 @@ TEST(SpringDamper, CoincidentPointsGiveFiniteValues) {
   const SpringDamperResult near_zero = CalcSpringDamper(law, 0.0, 1e-6 * kD, kDDot);
   EXPECT_LT((near_zero.stiffness - at_zero.stiffness).norm(), 1e-6);
   // A tension-only link with no gap also starts from its stiffness, from the taut side.
-  const SpringDamperResult rope = CalcSpringDamper(MakeTensionOnlyLaw(150.0, 0.0), 0.0,
-                                                   Vector3d::Zero(), Vector3d::Zero());
+  const SpringDamperResult rope =
+      CalcSpringDamper(MakeTensionOnlyLaw(150.0, 0.0), 0.0, Vector3d::Zero(), Vector3d::Zero());
   EXPECT_TRUE(rope.stiffness.isApprox(-150.0 * Matrix3d::Identity(), 1e-14));
 }
 
