@@ -1,0 +1,97 @@
+// Scene files with point masses and spring-dampers: every key read into the model, and bad
+// input reported with file, line and key.
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "ancfnet/common/error.hpp"
+#include "ancfnet/io/scene_loader.hpp"
+
+namespace ancfnet {
+namespace {
+
+constexpr const char* kTwoMasses = R"(gravity: [0, 0, 0]
+point_masses:
+  - {name: m1, mass: 0.05, position: [0, 0, 0], fixed: true}
+  - {name: m2, mass: 0.15, position: [0.51, 0, 0], velocity: [0, 1, 0]}
+spring_dampers:
+  - {name: link, from: m1, to: m2, natural_length: 0.5, law: {type: linear, stiffness: 200, damping: 0.1}}
+probes:
+  - {name: p2, quantity: position, at: m2}
+analysis: {type: dynamic, time_step: 1.0e-3, end_time: 0.1}
+)";
+
+std::string Replace(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  EXPECT_NE(at, std::string::npos) << from;
+  return text.replace(at, from.size(), to);
+}
+
+TEST(PointMassScene, ReadsMassesLinksAndProbes) {
+  const Scene scene = ParseScene(kTwoMasses);
+  const Model& model = scene.model;
+  ASSERT_EQ(model.point_masses().size(), 2u);
+  EXPECT_EQ(model.point_masses()[1].name, "m2");
+  EXPECT_DOUBLE_EQ(model.point_masses()[1].mass, 0.15);
+  const Index d1 = model.point_masses()[0].dof, d2 = model.point_masses()[1].dof;
+  EXPECT_TRUE(model.fixed()[d1] && model.fixed()[d1 + 2]);
+  EXPECT_FALSE(model.fixed()[d2]);
+  EXPECT_EQ(model.initial_velocities().segment<3>(d2), Vector3d(0, 1, 0));
+  ASSERT_EQ(model.links().size(), 1u);
+  EXPECT_DOUBLE_EQ(model.links()[0].natural_length, 0.5);
+  EXPECT_EQ(model.links()[0].law.spring, SpringKind::kLinear);
+  EXPECT_DOUBLE_EQ(model.links()[0].law.k1, 200.0);
+  EXPECT_DOUBLE_EQ(model.links()[0].law.damping_coefficient, 0.1);
+  ASSERT_EQ(scene.probes.size(), 1u);
+  EXPECT_EQ(Model::Locate(scene.probes[0].point, model.initial_positions()), Vector3d(0.51, 0, 0));
+}
+
+TEST(PointMassScene, ReadsEveryLawType) {
+  const std::string linear = "law: {type: linear, stiffness: 200, damping: 0.1}";
+  const auto law = [&](const std::string& text) {
+    return ParseScene(Replace(kTwoMasses, linear, text)).model.links()[0].law;
+  };
+  const ConnectionLaw rope = law("law: {type: tension_only, stiffness: 300, gap: 0.002}");
+  EXPECT_EQ(rope.spring, SpringKind::kTensionOnly);
+  EXPECT_DOUBLE_EQ(rope.gap, 0.002);
+  const ConnectionLaw cubic = law("law: {type: polynomial, k1: 10, k3: 5000, damping_time: 0.01}");
+  EXPECT_EQ(cubic.spring, SpringKind::kPolynomial);
+  EXPECT_DOUBLE_EQ(cubic.k3, 5000.0);
+  EXPECT_EQ(cubic.damping, DampingKind::kStiffnessProportional);
+  const ConnectionLaw table = law("law: {type: table, table: [[0, 0], [0.01, 2], [0.05, 30]]}");
+  EXPECT_EQ(table.spring, SpringKind::kPiecewiseLinear);
+  ASSERT_EQ(table.table.size(), 3u);
+  EXPECT_DOUBLE_EQ(table.CalcSpring(0.03).force, 16.0);
+}
+
+struct BadCase {
+  std::string from, to, message;
+};
+
+TEST(PointMassScene, BadInputNamesFileLineAndKey) {
+  const std::string linear = "law: {type: linear, stiffness: 200, damping: 0.1}";
+  const BadCase cases[] = {
+      {linear, "law: {type: linaer, stiffness: 200}", "scene.yaml:6:69: expected one of linear, tension_only, polynomial, table, got 'linaer'; "
+       "did you mean 'linear'? (key 'type')"},
+      {linear, "law: {type: linear, stiffness: -200}", "scene.yaml:6:88: expected a number > 0, got '-200' (key 'stiffness')"},
+      {linear, "law: {type: table, table: [[0, 0], [0.01]]}", "scene.yaml:6:92: expected a row [elongation, force], got a list of 1 item (key 'table[1]')"},
+      {linear, "law: {type: table, table: [[0, 0], [0, 2]]}", "scene.yaml:6:83: connection law: force table elongations must increase strictly"},
+      {linear, "law: {type: linear, stiffness: 1, damping: 1, damping_time: 1}", "damping_time"},
+      {"mass: 0.15", "mass: 0", "scene.yaml:4:22: expected a number > 0, got '0' (key 'mass')"},
+      {"to: m2", "to: m3", "scene.yaml:6:"},
+  };
+  for (const BadCase& bad : cases) {
+    try {
+      ParseScene(Replace(kTwoMasses, bad.from, bad.to), "scene.yaml");
+      ADD_FAILURE() << "no error for " << bad.to;
+    } catch (const InputError& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find(bad.message), std::string::npos) << message;
+      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace ancfnet
