@@ -1,6 +1,7 @@
 #include "ancfnet/analysis/energy_tracker.hpp"
 
 #include "ancfnet/assembly/link_forces.hpp"
+#include "ancfnet/forces/orbital_frame.hpp"
 
 namespace ancfnet {
 
@@ -26,7 +27,9 @@ EnergyTracker::EnergyTracker(const Model& model, const Workspace& ws, const Vect
                              double load_factor)
     : q_(q), applied_(ws.applied_force), viscous_(ws.viscous_force), load_factor_(load_factor) {
   account_.strain = CalcStrainEnergy(model, q);
-  account_.gravity = 0.0 - load_factor * ws.gravity_force.dot(q);  // +0, not −0, without gravity
+  // Gravity and the tidal potential of an orbital frame; "0.0 −" gives +0, not −0, without them.
+  account_.gravity =
+      0.0 - load_factor * ws.gravity_force.dot(q) + CalcOrbitalPotential(model, ws, q);
 }
 
 void EnergyTracker::Advance(const Model& model, const Workspace& ws, const VectorXd& q,
@@ -48,7 +51,8 @@ void EnergyTracker::Advance(const Model& model, const Workspace& ws, const Vecto
   account_.dissipated += dissipated;
   account_.kinetic = CalcKineticEnergy(model, ws, v);
   account_.strain = CalcStrainEnergy(model, q);
-  account_.gravity = 0.0 - load_factor * ws.gravity_force.dot(q);
+  account_.gravity =
+      0.0 - load_factor * ws.gravity_force.dot(q) + CalcOrbitalPotential(model, ws, q);
   q_ = q;
   load_factor_ = load_factor;
   applied_ = ws.applied_force;

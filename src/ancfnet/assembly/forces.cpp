@@ -2,6 +2,7 @@
 
 #include "ancfnet/assembly/link_forces.hpp"
 #include "ancfnet/elements/hermite_shape.hpp"
+#include "ancfnet/forces/orbital_frame.hpp"
 
 namespace ancfnet {
 namespace {
@@ -54,6 +55,7 @@ void CalcInternalForces(const Model& model, const VectorXd& q, const VectorXd& v
     ScatterAdd(elements[e], ws.element_viscous_force[e], &ws.viscous_force);
   }
   AddLinkForces(model, q, v, ws);
+  AddOrbitalFrameForces(model, q, v, ws);
 }
 
 void CalcExternalForces(const Model& model, const VectorXd& q, double load_factor, Workspace& ws) {
@@ -98,6 +100,8 @@ void AssembleIterationMatrix(const Model& model, const VectorXd& q, const Vector
   }
   AddLinkForces(model, q, v, ws);
   AddLinkJacobians(model, q, v, weights, matrix);
+  AddOrbitalFrameForces(model, q, v, ws);
+  AddOrbitalFrameJacobians(model, ws, weights.stiffness, weights.damping, matrix);
   if (weights.mass != 0.0) AddPointMassMatrix(model, weights.mass, matrix);
   // Point moments depend on the slope: −c_K λ ∂Q_ext/∂q.
   for (const PointMoment& load : model.point_moments()) {

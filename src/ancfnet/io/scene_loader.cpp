@@ -1,5 +1,6 @@
 #include "ancfnet/io/scene_loader.hpp"
 
+#include <cmath>
 #include <fstream>
 #include <optional>
 #include <sstream>
@@ -100,6 +101,22 @@ CablePointRef ReadPoint(const YamlValue& value, const std::vector<std::string>& 
   const std::string end = text.substr(dot + 1);
   if (end != "start" && end != "end") value.FailExpected(forms);
   return {text.substr(0, dot), end == "start" ? 0.0 : 1.0};
+}
+
+// orbital_frame: {mean_motion: n} (rad/s) or {orbit_radius: a} (m, about the Earth: n = √(μ/a³)).
+void ReadOrbitalFrame(const YamlValue& value, ModelBuilder* builder) {
+  constexpr double kEarthGravitationalParameter = 3.986004418e14;  // μ (m³/s²), IERS 2010
+  const YamlMap map = value.AsMap();
+  map.CheckKeys({"mean_motion", "orbit_radius"});
+  double mean_motion = 0.0;
+  if (auto v = map.Find("mean_motion")) {
+    if (map.Find("orbit_radius")) v->Fail("give either mean_motion or orbit_radius, not both");
+    mean_motion = v->AsPositive();
+  } else {
+    const double radius = map.Get("orbit_radius").AsPositive();
+    mean_motion = std::sqrt(kEarthGravitationalParameter / (radius * radius * radius));
+  }
+  value.Locate([&] { builder->SetOrbitalFrame(mean_motion); });
 }
 
 // point_masses: - {name, mass, position, velocity, fixed}
@@ -248,13 +265,14 @@ Scene ReadScene(const YamlValue& root) {
   if (root.node().IsNull())
     root.FailPlain("the scene is empty (expected a map with materials, sections and cables)");
   const YamlMap scene = root.AsMap();
-  scene.CheckKeys({"gravity", "materials", "sections", "point_masses", "cables", "spring_dampers",
-                   "constraints", "loads", "probes", "analysis", "output"});
+  scene.CheckKeys({"gravity", "orbital_frame", "materials", "sections", "point_masses", "cables",
+                   "spring_dampers", "constraints", "loads", "probes", "analysis", "output"});
   ModelBuilder builder;
   if (auto v = scene.Find("gravity")) {
     const Vector3d gravity = v->AsVector3();
     v->Locate([&] { builder.SetGravity(gravity); });
   }
+  if (auto v = scene.Find("orbital_frame")) ReadOrbitalFrame(*v, &builder);
   Library library;
   library.materials = ReadNamed<Material>(scene, "materials", ReadMaterial);
   library.sections = ReadNamed<Section>(scene, "sections", ReadSection);

@@ -3,6 +3,7 @@
 /// conditions, initial state). Built once by ModelBuilder, read-only afterwards.
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -119,6 +120,9 @@ class Model {
   const std::vector<PointMoment>& point_moments() const { return point_moments_; }
   const std::vector<DistributedLoad>& distributed_loads() const { return distributed_loads_; }
   const Vector3d& gravity() const { return gravity_; }
+  /// Mean motion n (rad/s) of the target's circular orbit when the model is written in its
+  /// Hill frame (forces/orbital_frame.hpp); empty for an inertial frame.
+  const std::optional<double>& orbital_frame() const { return orbital_frame_; }
   /// Per coordinate: true when fixed (eliminated from the unknowns).
   const std::vector<bool>& fixed() const { return fixed_; }
   const VectorXd& initial_positions() const { return initial_positions_; }
@@ -161,6 +165,7 @@ class Model {
   std::vector<PointMoment> point_moments_;
   std::vector<DistributedLoad> distributed_loads_;
   Vector3d gravity_ = Vector3d::Zero();
+  std::optional<double> orbital_frame_;
   std::vector<bool> fixed_;
   VectorXd initial_positions_;
   VectorXd initial_velocities_;

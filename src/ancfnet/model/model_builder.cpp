@@ -51,6 +51,11 @@ void ModelBuilder::CheckNameIsFree(const std::string& name) const {
     throw InputError(fmt::format("a point mass is already named '{}'", name));
 }
 
+void ModelBuilder::SetOrbitalFrame(double mean_motion) {
+  RequirePositive(mean_motion, "orbital mean motion");
+  model_.orbital_frame_ = mean_motion;
+}
+
 Index ModelBuilder::AddCoordinates(const VectorXd& initial_values) {
   const Index first = model_.num_dofs();
   const Index n = first + static_cast<Index>(initial_values.size());

@@ -41,6 +41,9 @@ class ModelBuilder {
  public:
   /// Gravitational acceleration (m/s²) acting on every cable.
   void SetGravity(const Vector3d& gravity);
+  /// Writes the model in the Hill frame of a target on a circular orbit of mean motion n > 0
+  /// (rad/s): Clohessy–Wiltshire relative dynamics (forces/orbital_frame.hpp).
+  void SetOrbitalFrame(double mean_motion);
   /// Adds a cable; returns its index. Names must be unique and non-empty.
   Index AddCable(const CableSpec& spec);
   /// Adds a point mass m ≥ 0 (kg) at `position` (m) moving at `velocity` (m/s); returns its

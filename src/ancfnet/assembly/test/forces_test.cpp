@@ -32,11 +32,12 @@ Model MakeLoadedModel() {
 // Point masses, an ideal knot and spring-damper links of every kind of point pair: cable point
 // to point mass (hardening law, stiffness-proportional damping), point mass to cable end with
 // zero natural length (isotropic damping), and cable point to cable point (tension-only table).
-Model MakeLinkedModel() {
+Model MakeLinkedModel(bool orbital_frame = false) {
   const CableProperties properties = MakeCableProperties(
       {.youngs_modulus = 1.0e8, .density = 1200.0}, MakeCircleSection(0.02));
   ModelBuilder builder;
   builder.SetGravity(Vector3d(0.0, 0.0, -9.81));
+  if (orbital_frame) builder.SetOrbitalFrame(0.7);  // large n: the terms must not vanish
   builder.AddPointMass("knot", 0.3, Vector3d(1.0, 0.0, 0.0), Vector3d(0.1, 0.2, 0.0));
   builder.AddPointMass("bullet", 0.2, Vector3d(1.5, 0.5, 0.2));
   builder.AddCable({.name = "a", .start = Vector3d::Zero(), .end = Vector3d(1.0, 0.0, 0.0),
@@ -111,8 +112,12 @@ TEST(Assembly, IterationMatrixWithLinksAndPointMassesMatchesFiniteDifferences) {
   ExpectIterationMatrixMatchesFiniteDifferences(MakeLinkedModel());
 }
 
+TEST(Assembly, IterationMatrixInAnOrbitalFrameMatchesFiniteDifferences) {
+  ExpectIterationMatrixMatchesFiniteDifferences(MakeLinkedModel(/*orbital_frame=*/true));
+}
+
 TEST(Assembly, InternalForcesOfIterationMatrixMatchForceOnlyPath) {
-  for (const Model& model : {MakeLoadedModel(), MakeLinkedModel()}) {
+  for (const Model& model : {MakeLoadedModel(), MakeLinkedModel(), MakeLinkedModel(true)}) {
   const State state = MakePerturbedState(model);
   Workspace ws(model);
   const DofMap dofs = DofMap::FreeCoordinates(model);

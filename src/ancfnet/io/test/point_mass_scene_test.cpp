@@ -65,6 +65,17 @@ TEST(PointMassScene, ReadsEveryLawType) {
   EXPECT_DOUBLE_EQ(table.CalcSpring(0.03).force, 16.0);
 }
 
+TEST(PointMassScene, ReadsTheOrbitalFrame) {
+  const std::string gravity = "gravity: [0, 0, 0]";
+  const Scene by_rate = ParseScene(Replace(kTwoMasses, gravity, "orbital_frame: {mean_motion: 0.001}"));
+  EXPECT_DOUBLE_EQ(*by_rate.model.orbital_frame(), 0.001);
+  // A 400 km orbit: a = 6778.137 km, n = √(μ/a³) = 1.1313e-3 rad/s.
+  const Scene by_radius =
+      ParseScene(Replace(kTwoMasses, gravity, "orbital_frame: {orbit_radius: 6778137}"));
+  EXPECT_NEAR(*by_radius.model.orbital_frame(), 1.1313e-3, 1e-7);
+  EXPECT_FALSE(ParseScene(kTwoMasses).model.orbital_frame());
+}
+
 struct BadCase {
   std::string from, to, message;
 };

@@ -1,0 +1,76 @@
+#include "ancfnet/forces/orbital_frame.hpp"
+
+namespace ancfnet {
+namespace {
+
+// (I₄ ⊗ A) x for a 12-vector x of four 3-blocks.
+Vector12d ApplyToBlocks(const Matrix3d& a, const Vector12d& x) {
+  Vector12d y;
+  for (int b = 0; b < 4; ++b) y.segment<3>(3 * b) = a * x.segment<3>(3 * b);
+  return y;
+}
+
+// M_e (I₄ ⊗ A).
+Matrix12d MassTimesBlocks(const Matrix12d& mass, const Matrix3d& a) {
+  Matrix12d m;
+  for (int b = 0; b < 4; ++b) m.middleCols<3>(3 * b) = mass.middleCols<3>(3 * b) * a;
+  return m;
+}
+
+}  // namespace
+
+Matrix3d CalcHillStiffness(double n) { return Vector3d(3.0 * n * n, 0.0, -n * n).asDiagonal(); }
+
+Matrix3d CalcHillGyroscopic(double n) {
+  Matrix3d g = Matrix3d::Zero();
+  g(0, 1) = 2.0 * n;
+  g(1, 0) = -2.0 * n;
+  return g;
+}
+
+void AddOrbitalFrameForces(const Model& model, const VectorXd& q, const VectorXd& v,
+                           Workspace& ws) {
+  if (!model.orbital_frame()) return;
+  const Matrix3d k = CalcHillStiffness(*model.orbital_frame());
+  const Matrix3d g = CalcHillGyroscopic(*model.orbital_frame());
+  const auto& elements = model.elements();
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    const Vector12d accel =
+        ApplyToBlocks(k, model.Gather(elements[e], q)) + ApplyToBlocks(g, model.Gather(elements[e], v));
+    const Vector12d force = ws.element_mass[e] * accel;
+    for (int i = 0; i < kCableElementDofs; ++i) ws.internal_force[elements[e].dofs[i]] -= force[i];
+  }
+  for (const PointMass& point : model.point_masses())
+    ws.internal_force.segment<3>(point.dof) -=
+        point.mass * (k * q.segment<3>(point.dof) + g * v.segment<3>(point.dof));
+}
+
+void AddOrbitalFrameJacobians(const Model& model, const Workspace& ws, double stiffness_weight,
+                              double damping_weight, SystemMatrix* matrix) {
+  if (!model.orbital_frame()) return;
+  const Matrix3d k = CalcHillStiffness(*model.orbital_frame());
+  const Matrix3d g = CalcHillGyroscopic(*model.orbital_frame());
+  const Matrix3d field = stiffness_weight * k + damping_weight * g;
+  for (std::size_t e = 0; e < model.elements().size(); ++e)
+    matrix->AddElementBlock(static_cast<Index>(e), MassTimesBlocks(ws.element_mass[e], field),
+                            -1.0);
+  const auto& points = model.point_masses();
+  for (std::size_t i = 0; i < points.size(); ++i)
+    matrix->AddPointMassBlock(static_cast<Index>(i), field, -points[i].mass);
+}
+
+double CalcOrbitalPotential(const Model& model, const Workspace& ws, const VectorXd& q) {
+  if (!model.orbital_frame()) return 0.0;
+  const Matrix3d k = CalcHillStiffness(*model.orbital_frame());
+  double potential = 0.0;
+  const auto& elements = model.elements();
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    const Vector12d x = model.Gather(elements[e], q);
+    potential -= 0.5 * x.dot(ws.element_mass[e] * ApplyToBlocks(k, x));
+  }
+  for (const PointMass& point : model.point_masses())
+    potential -= 0.5 * point.mass * q.segment<3>(point.dof).dot(k * q.segment<3>(point.dof));
+  return potential;
+}
+
+}  // namespace ancfnet
