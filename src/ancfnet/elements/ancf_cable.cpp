@@ -152,6 +152,20 @@ void AddBendingTerms(const CableElementParameters& p, const Matrix34d& e, const 
   kt.noalias() -= (2.0 * weight / d) * (jk_t * m_viscous) * jk.transpose();
 }
 
+// Simple bending at one Gauss point: U_b = ½ EI |r''|², Q = EI S''ᵀ r'' (Berzeri & Shabana 2000),
+// with Kelvin–Voigt damping EI τ S''ᵀ ṙ''. Constant, symmetric Jacobians EI (S'' S''ᵀ ⊗ I).
+void AddSecondDerivativeBendingTerms(const CableElementParameters& p, const Matrix34d& e,
+                                     const Matrix34d& e_dot, const Vector4d& dds, double weight,
+                                     const CableForceOutputs& out) {
+  const double ei = weight * p.bending_stiffness;
+  const double ei_tau = ei * p.bending_damping_time;
+  const Vector3d b_dot = e_dot * dds;
+  if (out.force) out.force->noalias() += DistributeForce(dds, ei * (e * dds) + ei_tau * b_dot);
+  if (out.viscous_force && ei_tau > 0.0) out.viscous_force->noalias() += DistributeForce(dds, ei_tau * b_dot);
+  if (out.stiffness) AddKroneckerIdentity(dds, dds, ei, *out.stiffness);
+  if (out.damping && ei_tau > 0.0) AddKroneckerIdentity(dds, dds, ei_tau, *out.damping);
+}
+
 }  // namespace
 
 void CalcCableInternalForce(const CableElementParameters& p, const Vector12d& e,
@@ -172,7 +186,11 @@ void CalcCableInternalForce(const CableElementParameters& p, const Vector12d& e,
   const GaussRule& bending = GetGaussRule(p.bending_gauss_points);
   for (int i = 0; i < bending.size; ++i) {
     const HermiteShape shape = CalcHermiteShape(bending.points[i], p.length);
-    AddBendingTerms(p, e_mat, e_dot_mat, shape.ds, shape.dds, bending.weights[i] * p.length, out);
+    const double weight = bending.weights[i] * p.length;
+    if (p.bending_model == BendingModel::kSecondDerivative)
+      AddSecondDerivativeBendingTerms(p, e_mat, e_dot_mat, shape.dds, weight, out);
+    else
+      AddBendingTerms(p, e_mat, e_dot_mat, shape.ds, shape.dds, weight, out);
   }
 }
 
@@ -198,8 +216,15 @@ double CalcCableStrainEnergy(const CableElementParameters& p, const Vector12d& e
   }
   const GaussRule& bending = GetGaussRule(p.bending_gauss_points);
   for (int i = 0; i < bending.size; ++i) {
-    const double kappa = CalcCableStrain(p, e, bending.points[i]).curvature;
-    energy += 0.5 * bending.weights[i] * p.length * p.bending_stiffness * kappa * kappa;
+    double measure = 0.0;  // κ², or |r''|² for the simple model
+    if (p.bending_model == BendingModel::kSecondDerivative) {
+      const HermiteShape shape = CalcHermiteShape(bending.points[i], p.length);
+      measure = (Eigen::Map<const Matrix34d>(e.data()) * shape.dds).squaredNorm();
+    } else {
+      const double kappa = CalcCableStrain(p, e, bending.points[i]).curvature;
+      measure = kappa * kappa;
+    }
+    energy += 0.5 * bending.weights[i] * p.length * p.bending_stiffness * measure;
   }
   return energy;
 }

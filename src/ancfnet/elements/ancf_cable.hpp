@@ -8,6 +8,17 @@
 
 namespace ancfnet {
 
+/// How bending is measured.
+enum class BendingModel {
+  /// The exact curvature κ = |r' × r''|/|r'|³ (Gerstmayr & Shabana 2006): objective and exact at
+  /// any stretch, singular where |r'| → 0.
+  kExactCurvature,
+  /// U_b = ½ EI ∫ |r''|² dx (Berzeri & Shabana 2000, the "simple model"): linear and constant
+  /// stiffness, exact for small stretch, regular at any |r'| — for ropes and net threads, whose
+  /// slack parts can shrink |r'| without limit.
+  kSecondDerivative,
+};
+
 /// Constant properties of one cable element. All SI.
 struct CableElementParameters {
   double length = 0.0;             ///< reference (stress-free) length L (m), > 0
@@ -20,6 +31,7 @@ struct CableElementParameters {
   double bending_damping_time = 0.0;
   /// Rope law: N = EA max(ε + τ_ε ε̇, 0) while stretched, 0 while slack. Bending still acts.
   bool tension_only = false;
+  BendingModel bending_model = BendingModel::kExactCurvature;
   /// Gauss points along the element for the axial and the bending terms (docs/theory.md says why
   /// these defaults avoid membrane locking).
   int axial_gauss_points = 3;

@@ -137,6 +137,7 @@ Index ModelBuilder::AddCable(const CableSpec& spec) {
     ep.axial_damping_time = p.axial_damping_time;
     ep.bending_damping_time = p.bending_damping_time;
     ep.tension_only = p.tension_only;
+    ep.bending_model = p.bending_model;
     ep.axial_gauss_points = p.axial_gauss_points;
     ep.bending_gauss_points = p.bending_gauss_points;
     model_.elements_.push_back(element);

@@ -104,6 +104,27 @@ TEST(AncfCable, KelvinVoigtJacobiansMatchFiniteDifferencesOnAnArc) {
   ExpectJacobiansMatchFiniteDifferences(p, e, Velocity());
 }
 
+TEST(AncfCable, SecondDerivativeBendingMatchesFiniteDifferences) {
+  CableElementParameters p = MakeParameters();
+  p.bending_model = BendingModel::kSecondDerivative;
+  p.axial_damping_time = 0.01;
+  p.bending_damping_time = 0.02;
+  ExpectJacobiansMatchFiniteDifferences(p, BentElement(), Velocity());
+  // Force = gradient of the energy, and regular where |r'| vanishes.
+  p.bending_damping_time = p.axial_damping_time = 0.0;
+  Vector12d collapsed = BentElement();
+  collapsed.segment<3>(3).setZero();
+  const Vector12d f = Force(p, collapsed, Vector12d::Zero());
+  EXPECT_TRUE(f.allFinite());
+  for (int i = 0; i < 12; ++i) {
+    Vector12d ep = collapsed, em = collapsed;
+    ep[i] += 1e-6;
+    em[i] -= 1e-6;
+    EXPECT_NEAR(f[i], (CalcCableStrainEnergy(p, ep) - CalcCableStrainEnergy(p, em)) / 2e-6,
+                1e-6 * f.norm());
+  }
+}
+
 TEST(AncfCable, TensionOnlyJacobiansMatchFiniteDifferences) {
   CableElementParameters p = MakeParameters();
   p.tension_only = true;

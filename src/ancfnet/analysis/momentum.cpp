@@ -1,0 +1,34 @@
+#include "ancfnet/analysis/momentum.hpp"
+
+namespace ancfnet {
+
+Vector3d CalcLinearMomentum(const Model& model, const Workspace& ws, const VectorXd& v) {
+  Vector3d p = Vector3d::Zero();
+  const auto& elements = model.elements();
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    // The position rows (blocks 0 and 2) of M_e ė.
+    const Vector12d force = ws.element_mass[e] * model.Gather(elements[e], v);
+    p += force.segment<3>(0) + force.segment<3>(6);
+  }
+  for (const PointMass& point : model.point_masses()) p += point.mass * v.segment<3>(point.dof);
+  return p;
+}
+
+Vector3d CalcAngularMomentum(const Model& model, const Workspace& ws, const VectorXd& q,
+                             const VectorXd& v) {
+  Vector3d angular = Vector3d::Zero();
+  const auto& elements = model.elements();
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    const Vector12d x = model.Gather(elements[e], q);
+    const Vector12d x_dot = model.Gather(elements[e], v);
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        angular += ws.element_mass[e](3 * i, 3 * j) *
+                   Vector3d(x.segment<3>(3 * i)).cross(Vector3d(x_dot.segment<3>(3 * j)));
+  }
+  for (const PointMass& point : model.point_masses())
+    angular += point.mass * Vector3d(q.segment<3>(point.dof)).cross(Vector3d(v.segment<3>(point.dof)));
+  return angular;
+}
+
+}  // namespace ancfnet
