@@ -1,5 +1,7 @@
 #include "ancfnet/analysis/probe.hpp"
 
+#include "ancfnet/analysis/net_metrics.hpp"
+
 namespace ancfnet {
 
 std::vector<std::string> ProbeColumns(const Probe& probe) {
@@ -11,11 +13,23 @@ std::vector<std::string> ProbeColumns(const Probe& probe) {
       return {n + ".vx", n + ".vy", n + ".vz"};
     case ProbeQuantity::kEnergy:
       return {n + ".kinetic", n + ".strain", n + ".gravity", n + ".work", n + ".dissipated"};
+    case ProbeQuantity::kMouthArea:
+      return {n + ".area"};
+    case ProbeQuantity::kCentroid:
+      return {n + ".x", n + ".y", n + ".z"};
+    case ProbeQuantity::kDistance:
+      return {n + ".distance"};
   }
   return {};
 }
 
-void EvaluateProbe(const Probe& probe, const Model& /*model*/, const State& state,
+Vector3d CalcNetCentroid(const Model& model, const Net& net, const VectorXd& q) {
+  std::vector<Vector3d> knots;
+  for (Index knot : net.knots) knots.push_back(q.segment<3>(model.point_masses()[knot].dof));
+  return CalcCentroid(knots);
+}
+
+void EvaluateProbe(const Probe& probe, const Model& model, const State& state,
                    const EnergyAccount& energy, std::vector<double>* values) {
   switch (probe.quantity) {
     case ProbeQuantity::kPosition:
@@ -29,6 +43,24 @@ void EvaluateProbe(const Probe& probe, const Model& /*model*/, const State& stat
       values->insert(values->end(), {energy.kinetic, energy.strain, energy.gravity, energy.work,
                                      energy.dissipated});
       break;
+    case ProbeQuantity::kMouthArea: {
+      const Net& net = model.nets()[probe.net];
+      std::vector<Vector3d> polygon;
+      for (Index knot : net.perimeter) polygon.push_back(state.q.segment<3>(model.point_masses()[knot].dof));
+      values->push_back(CalcMouthArea(polygon, net.axis));
+      break;
+    }
+    case ProbeQuantity::kCentroid: {
+      const Vector3d c = CalcNetCentroid(model, model.nets()[probe.net], state.q);
+      values->insert(values->end(), {c.x(), c.y(), c.z()});
+      break;
+    }
+    case ProbeQuantity::kDistance: {
+      const Net& net = model.nets()[probe.net];
+      values->push_back(
+          CalcDistanceTravelled(probe.reference, CalcNetCentroid(model, net, state.q), net.axis));
+      break;
+    }
   }
 }
 

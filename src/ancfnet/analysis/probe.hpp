@@ -10,15 +10,27 @@
 
 namespace ancfnet {
 
-enum class ProbeQuantity { kPosition, kVelocity, kEnergy };
+enum class ProbeQuantity {
+  kPosition,    ///< NAME.x/y/z of a point
+  kVelocity,    ///< NAME.vx/vy/vz of a point
+  kEnergy,      ///< NAME.kinetic/strain/gravity/work/dissipated of the whole system
+  kMouthArea,   ///< NAME.area: the net's perimeter polygon projected normal to its axis (m²)
+  kCentroid,    ///< NAME.x/y/z: mean position of the net's knots (m)
+  kDistance,    ///< NAME.distance: travel of that centroid along the net's axis (m)
+};
 
 /// A named probe. Position and velocity probes read a point (a cable material point or a point
-/// mass); energy probes read the whole system (their point is unused).
+/// mass); energy probes read the whole system; net probes read net `net`.
 struct Probe {
   std::string name;
   ProbeQuantity quantity = ProbeQuantity::kPosition;
   PointLocation point;
+  Index net = -1;
+  Vector3d reference = Vector3d::Zero();  ///< kDistance: the centroid at the start
 };
+
+/// Mean position of a net's knots (m).
+Vector3d CalcNetCentroid(const Model& model, const Net& net, const VectorXd& q);
 
 /// Column names of a probe: NAME.x/y/z, NAME.vx/vy/vz, or NAME.kinetic, NAME.strain,
 /// NAME.gravity, NAME.work, NAME.dissipated.

@@ -14,6 +14,8 @@
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/io/closest_name.hpp"
 #include "ancfnet/io/connection_law_reader.hpp"
+#include "ancfnet/io/net_reader.hpp"
+#include "ancfnet/io/scene_library.hpp"
 #include "ancfnet/io/scene_settings_reader.hpp"
 #include "ancfnet/io/yaml_reader.hpp"
 #include "ancfnet/model/model_builder.hpp"
@@ -24,28 +26,6 @@ namespace {
 // A bound far above any useful mesh that keeps a typo (elements: 2000000000) from exhausting the
 // memory instead of being reported.
 constexpr int kMaxElementsPerCable = 1'000'000;
-
-// Named definitions in file order (the order they are listed in messages).
-template <typename T>
-using NamedList = std::vector<std::pair<std::string, T>>;
-
-struct Library {
-  NamedList<Material> materials;
-  NamedList<Section> sections;
-};
-
-// The definition named by `value`; the error lists the known names or suggests the closest.
-template <typename T>
-const T& Lookup(const NamedList<T>& list, const YamlValue& value, std::string_view what,
-                std::string_view list_label) {
-  const std::string name = value.AsString();
-  std::vector<std::string_view> names;
-  for (const auto& [known, definition] : list) {
-    if (known == name) return definition;
-    names.push_back(known);
-  }
-  value.Fail(fmt::format("no {} named '{}'{}", what, name, SuggestName(name, names, list_label)));
-}
 
 Material ReadMaterial(const YamlValue& value) {
   const YamlMap map = value.AsMap();
@@ -242,19 +222,38 @@ std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
     probe.quantity = map.Get("quantity").AsEnum<ProbeQuantity>(
         {{"position", ProbeQuantity::kPosition},
          {"velocity", ProbeQuantity::kVelocity},
-         {"energy", ProbeQuantity::kEnergy}});
+         {"energy", ProbeQuantity::kEnergy},
+         {"mouth_area", ProbeQuantity::kMouthArea},
+         {"centroid", ProbeQuantity::kCentroid},
+         {"distance", ProbeQuantity::kDistance}});
     const bool whole_system = probe.quantity == ProbeQuantity::kEnergy;
+    const bool of_a_point =
+        probe.quantity == ProbeQuantity::kPosition || probe.quantity == ProbeQuantity::kVelocity;
     if (auto at = map.Find("at"); at && whole_system)
       at->Fail("an energy probe reads the whole system and takes no point");
-    map.CheckKeys({"name", "quantity", "at"});
+    if (of_a_point) map.CheckKeys({"name", "quantity", "at"});
+    else if (whole_system) map.CheckKeys({"name", "quantity"});
+    else map.CheckKeys({"name", "quantity", "net"});
     const YamlValue name = map.Get("name");
     probe.name = name.AsString();
     for (const Probe& other : probes)
       if (other.name == probe.name) name.Fail(fmt::format("two probes are named '{}'", probe.name));
-    if (!whole_system) {
+    if (of_a_point) {
       const YamlValue at = map.Get("at");
       const CablePointRef point = ReadPoint(at, point_masses);
       probe.point = at.Locate([&] { return model.LocatePoint(point.cable, point.s); });
+    } else if (!whole_system) {
+      const YamlValue net = map.Get("net");
+      const std::string net_name = net.AsString();
+      std::vector<std::string_view> names;
+      for (std::size_t i = 0; i < model.nets().size(); ++i) {
+        names.push_back(model.nets()[i].name);
+        if (model.nets()[i].name == net_name) probe.net = static_cast<Index>(i);
+      }
+      if (probe.net < 0)
+        net.Fail(fmt::format("no net named '{}'{}", net_name, SuggestName(net_name, names, "nets")));
+      probe.reference =
+          CalcNetCentroid(model, model.nets()[probe.net], model.initial_positions());
     }
     probes.push_back(std::move(probe));
   }
@@ -265,8 +264,9 @@ Scene ReadScene(const YamlValue& root) {
   if (root.node().IsNull())
     root.FailPlain("the scene is empty (expected a map with materials, sections and cables)");
   const YamlMap scene = root.AsMap();
-  scene.CheckKeys({"gravity", "orbital_frame", "materials", "sections", "point_masses", "cables",
-                   "spring_dampers", "constraints", "loads", "probes", "analysis", "output"});
+  scene.CheckKeys({"gravity", "orbital_frame", "materials", "sections", "point_masses", "nets",
+                   "cables", "spring_dampers", "constraints", "loads", "probes", "analysis",
+                   "output"});
   ModelBuilder builder;
   if (auto v = scene.Find("gravity")) {
     const Vector3d gravity = v->AsVector3();
@@ -279,7 +279,9 @@ Scene ReadScene(const YamlValue& root) {
   std::vector<std::string> point_masses;
   if (auto v = scene.Find("point_masses"))
     for (const YamlValue& item : v->AsList()) ReadPointMass(item, &builder, &point_masses);
-  // Cables are required unless the scene has point masses.
+  if (auto v = scene.Find("nets"))
+    for (const YamlValue& item : v->AsList()) ReadNet(item, library, &builder, &point_masses);
+  // Cables are required unless the scene has point masses (or nets).
   if (auto v = scene.Find("cables"); v || point_masses.empty())
     for (const YamlValue& item : scene.Get("cables").AsList(/*non_empty=*/point_masses.empty()))
       ReadCable(item, library, &builder);

@@ -43,6 +43,15 @@ Json ProbeJson(const Probe& probe, const Model& model, const State& state,
         energies[columns[i].substr(probe.name.size() + 1)] = Number(values[i]);
       return {{"energy", energies}};
     }
+    case ProbeQuantity::kCentroid: {
+      Json vector = Json::array();
+      for (double value : values) vector.push_back(Number(value));
+      return {{"centroid", vector}};
+    }
+    case ProbeQuantity::kMouthArea:
+      return {{"mouth_area", Number(values[0])}};
+    case ProbeQuantity::kDistance:
+      return {{"distance", Number(values[0])}};
   }
   return Json::object();
 }

@@ -24,6 +24,8 @@ void Validate(const NetSpec& spec) {
   if (!(spec.packing_ratio > 0.0 && spec.packing_ratio <= 1.0))
     throw InputError(fmt::format("packing ratio must be in (0, 1] (got {})", spec.packing_ratio));
   if (!(spec.knot_mass >= 0.0)) throw InputError("knot mass must be ≥ 0");
+  if (!(spec.axis.norm() > 0.0) || !spec.axis.allFinite())
+    throw InputError("a net's launch axis must be a non-zero vector");
   if (spec.knot_model == KnotModel::kCompliant && !(spec.knot_mass > 0.0))
     throw InputError("compliant knots need a knot mass > 0");
   for (const KnotMass& extra : spec.knot_masses) {

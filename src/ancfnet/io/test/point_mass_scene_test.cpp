@@ -76,6 +76,42 @@ TEST(PointMassScene, ReadsTheOrbitalFrame) {
   EXPECT_FALSE(ParseScene(kTwoMasses).model.orbital_frame());
 }
 
+TEST(PointMassScene, ReadsANetWithBulletsAndNetProbes) {
+  const Scene scene = ParseScene(R"(gravity: [0, 0, 0]
+materials:
+  dyneema: {youngs_modulus: 1.0e11, density: 970}
+sections:
+  thread: {shape: circle, diameter: 0.001}
+nets:
+  - {name: net, type: square, side: 2.0, meshes: [2, 1], material: dyneema, section: thread,
+     knot_model: compliant, knot_mass: 0.001, knot_link: {type: linear, stiffness: 1.0e4},
+     packing_ratio: 0.5, bullets: {mass: 0.1, speed: 10, angle: 90, knots: [0]}}
+probes:
+  - {name: mouth, quantity: mouth_area, net: net}
+  - {name: travel, quantity: distance, net: net}
+  - {name: k0, quantity: velocity, at: net.k0}
+)");
+  const Model& model = scene.model;
+  ASSERT_EQ(model.nets().size(), 1u);
+  const Net& net = model.nets()[0];
+  EXPECT_EQ(net.knots.size(), 6u);
+  EXPECT_EQ(net.threads.size(), 7u);
+  EXPECT_EQ(model.links().size(), 14u);  // two per thread
+  // Tension-only threads with the simple bending model by default, half their natural length.
+  const CableElementParameters& p = model.elements()[0].parameters;
+  EXPECT_TRUE(p.tension_only);
+  EXPECT_EQ(p.bending_model, BendingModel::kSecondDerivative);
+  EXPECT_DOUBLE_EQ(p.length, 1.0);
+  // The bullet at knot 0 flies at 90° from the axis: radially, away from the centre.
+  const Vector3d v0 = model.initial_velocities().segment<3>(model.point_masses()[0].dof);
+  EXPECT_TRUE(v0.isApprox(10.0 * Vector3d(-1.0, -1.0, 0.0).normalized()));  // knot 0 at (−1, −1)
+  EXPECT_DOUBLE_EQ(model.point_masses()[0].mass, 0.101);
+  std::vector<double> values;
+  EvaluateProbe(scene.probes[0], model, MakeInitialState(model), {}, &values);
+  EXPECT_NEAR(values[0], 1.0, 1e-12);  // 2 m × 2 m packed by 0.5 in both directions
+  EXPECT_EQ(ProbeColumns(scene.probes[1]), std::vector<std::string>{"travel.distance"});
+}
+
 struct BadCase {
   std::string from, to, message;
 };

@@ -1,0 +1,140 @@
+#include "ancfnet/io/net_reader.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "ancfnet/io/connection_law_reader.hpp"
+#include "ancfnet/model/net_builder.hpp"
+
+namespace ancfnet {
+namespace {
+
+// A number for both directions, or a pair [u, v].
+template <typename Read>
+auto ReadPair(const YamlValue& value, Read read) {
+  if (!value.IsSequence()) {
+    const auto both = read(value);
+    return std::pair{both, both};
+  }
+  const std::vector<YamlValue> items = value.AsList();
+  if (items.size() != 2) value.FailExpected("a number or a pair [u, v]");
+  return std::pair{read(items[0]), read(items[1])};
+}
+
+NetTopology ReadGridTopology(const YamlMap& map, bool diamond) {
+  GridNetSpec grid;
+  grid.diamond = diamond;
+  std::tie(grid.side_u, grid.side_v) =
+      ReadPair(map.Get("side"), [](const YamlValue& v) { return v.AsPositive(); });
+  if (auto v = map.Find("meshes")) {
+    if (map.Find("mesh_size")) v->Fail("give either meshes or mesh_size, not both");
+    std::tie(grid.meshes_u, grid.meshes_v) =
+        ReadPair(*v, [](const YamlValue& x) { return x.AsInt(1, 10000); });
+  } else {
+    const double size = map.Get("mesh_size").AsPositive();
+    grid.meshes_u = MeshesForSize(grid.side_u, size);
+    grid.meshes_v = MeshesForSize(grid.side_v, size);
+  }
+  if (auto v = map.Find("center")) grid.center = v->AsVector3();
+  if (auto v = map.Find("axis_u")) grid.axis_u = v->AsVector3();
+  if (auto v = map.Find("axis_v")) grid.axis_v = v->AsVector3();
+  return map.Get("side").Locate([&] { return MakeGridNet(grid); });
+}
+
+NetTopology ReadGraphTopology(const YamlMap& map) {
+  std::vector<Vector3d> knots;
+  for (const YamlValue& knot : map.Get("knot_positions").AsList(true)) knots.push_back(knot.AsVector3());
+  std::vector<std::array<Index, 2>> threads;
+  for (const YamlValue& thread : map.Get("threads").AsList(true)) {
+    const std::vector<YamlValue> ends = thread.AsList();
+    if (ends.size() != 2) thread.FailExpected("a thread [knot, knot]");
+    threads.push_back({ends[0].AsInt(0), ends[1].AsInt(0)});
+  }
+  std::vector<Index> perimeter;
+  if (auto v = map.Find("perimeter"))
+    for (const YamlValue& k : v->AsList()) perimeter.push_back(k.AsInt(0));
+  return map.Get("threads").Locate([&] { return MakeGraphNet(knots, threads, perimeter); });
+}
+
+// bullets: {mass, speed, angle (degrees from the launch axis), knots: corners | [i, ...]}:
+// each flies at `speed` tilted by `angle` from the axis towards the outside of the net.
+void ReadBullets(const YamlValue& value, NetSpec* spec) {
+  const YamlMap map = value.AsMap();
+  map.CheckKeys({"mass", "speed", "angle", "knots"});
+  const double mass = map.Get("mass").AsPositive();
+  const double speed = map.Get("speed").AsNonNegative();
+  const double angle = map.Find("angle") ? map.Get("angle").AsNumberIn(0.0, 90.0) : 0.0;
+  std::vector<Index> knots = spec->topology.corners;
+  if (auto v = map.Find("knots"); v && !(v->IsScalar() && v->AsString() == "corners")) {
+    knots.clear();
+    for (const YamlValue& k : v->AsList(true)) {
+      const int knot = k.AsInt(0);
+      if (knot >= static_cast<int>(spec->topology.knots.size()))
+        k.Fail("no such knot in the net");
+      knots.push_back(knot);
+    }
+  }
+  Vector3d center = Vector3d::Zero();
+  for (const Vector3d& knot : spec->topology.knots) center += knot;
+  center /= static_cast<double>(spec->topology.knots.size());
+  const Vector3d axis = spec->axis.normalized();
+  const double theta = angle * std::numbers::pi / 180.0;
+  for (Index knot : knots) {
+    Vector3d radial = spec->topology.knots[knot] - center;
+    radial -= radial.dot(axis) * axis;
+    if (radial.norm() > 0.0) radial.normalize();
+    spec->knot_masses.push_back(
+        {knot, mass, spec->velocity + speed * (std::cos(theta) * axis + std::sin(theta) * radial)});
+  }
+}
+
+}  // namespace
+
+void ReadNet(const YamlValue& item, const Library& library, ModelBuilder* builder,
+             std::vector<std::string>* point_masses) {
+  const YamlMap map = item.AsMap();
+  const std::size_t type = map.Get("type").AsChoice({"square", "diamond", "graph"});
+  std::vector<std::string_view> keys = {
+      "name", "type", "material", "section", "elements_per_thread", "tension_only", "bending",
+      "natural_length_ratio", "knot_model", "knot_mass", "knot_link", "velocity",
+      "packing_ratio", "bullets"};
+  if (type == 2) keys.insert(keys.end(), {"knot_positions", "threads", "perimeter", "axis"});
+  else keys.insert(keys.end(), {"side", "meshes", "mesh_size", "center", "axis_u", "axis_v"});
+  map.CheckKeys(keys);
+
+  NetSpec spec;
+  spec.name = map.Get("name").AsString();
+  spec.topology = type == 2 ? ReadGraphTopology(map) : ReadGridTopology(map, type == 1);
+  if (type == 2) {
+    if (auto v = map.Find("axis")) spec.axis = v->AsVector3();
+  } else {
+    const Vector3d u = map.Find("axis_u") ? map.Get("axis_u").AsVector3() : Vector3d::UnitX();
+    const Vector3d v = map.Find("axis_v") ? map.Get("axis_v").AsVector3() : Vector3d::UnitY();
+    spec.axis = u.cross(v);
+  }
+  const Material& material = Lookup(library.materials, map.Get("material"), "material",
+                                    "known materials");
+  const Section& section = Lookup(library.sections, map.Get("section"), "section",
+                                  "known sections");
+  spec.thread = MakeCableProperties(material, section);
+  spec.thread.tension_only = map.Find("tension_only") ? map.Get("tension_only").AsBool() : true;
+  spec.thread.bending_model = BendingModel::kSecondDerivative;
+  if (auto v = map.Find("bending"))
+    spec.thread.bending_model = v->AsEnum<BendingModel>(
+        {{"simple", BendingModel::kSecondDerivative}, {"exact", BendingModel::kExactCurvature}});
+  if (auto v = map.Find("elements_per_thread")) spec.elements_per_thread = v->AsInt(1, 1000);
+  if (auto v = map.Find("natural_length_ratio")) spec.natural_length_ratio = v->AsPositive();
+  if (auto v = map.Find("knot_model"))
+    spec.knot_model = v->AsEnum<KnotModel>(
+        {{"ideal", KnotModel::kIdeal}, {"compliant", KnotModel::kCompliant}});
+  if (auto v = map.Find("knot_mass")) spec.knot_mass = v->AsNonNegative();
+  if (spec.knot_model == KnotModel::kCompliant) spec.link_law = ReadConnectionLaw(map.Get("knot_link"));
+  if (auto v = map.Find("velocity")) spec.velocity = v->AsVector3();
+  if (auto v = map.Find("packing_ratio")) spec.packing_ratio = v->AsNumberIn(1e-6, 1.0);
+  if (auto v = map.Find("bullets")) ReadBullets(*v, &spec);
+  item.Locate([&] { AddNet(*builder, spec); });
+  for (std::size_t k = 0; k < spec.topology.knots.size(); ++k)
+    point_masses->push_back(KnotName(spec.name, static_cast<Index>(k)));
+}
+
+}  // namespace ancfnet
