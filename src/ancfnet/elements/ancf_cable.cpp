@@ -11,6 +11,18 @@ namespace {
 using Matrix34d = Eigen::Matrix<double, 3, 4>;
 using Matrix12x3d = Eigen::Matrix<double, 12, 3>;
 
+// φ(ε) = (ε + √(ε² + s²))/2 and its first two derivatives.
+struct SmoothMax {
+  double value = 0.0;
+  double slope = 0.0;
+  double curvature = 0.0;
+};
+
+SmoothMax CalcSmoothMax(double x, double s) {
+  const double r = std::sqrt(x * x + s * s);
+  return {0.5 * (x + r), 0.5 * (1.0 + x / r), 0.5 * s * s / (r * r * r)};
+}
+
 // κ_ε L_e: curvature (times element length) around which bending damping passes from the rate of
 // the curvature vector (near straight) to the rate of its magnitude (bent). A bent element in
 // rigid rotation dissipates a fraction κ_ε²/(κ² + κ_ε²) of what the vector rate would give.
@@ -44,6 +56,29 @@ Matrix12x3d StackBlocks(const Vector4d& u, const Matrix3d& x, const Vector4d& v,
   return m;
 }
 
+// The smooth rope law at one Gauss point: N = EA φ(ε) + EA τ φ'(ε) ε̇ with the smooth maximum
+// φ = (ε + √(ε² + ε_s²))/2, so that Newton sees no kink where a thread goes slack. de = ∂ε/∂e,
+// de_dot = ∂ε̇/∂e.
+void AddSmoothRopeTerms(const CableElementParameters& p, double strain, double strain_rate,
+                        const Vector12d& de, const Vector12d& de_dot, const Vector4d& ds,
+                        double weight, const CableForceOutputs& out) {
+  const SmoothMax phi = CalcSmoothMax(strain, p.rope_smoothing_strain);
+  const double ea = p.axial_stiffness;
+  const double ea_tau = ea * p.axial_damping_time;
+  const double viscous_n = ea_tau * phi.slope * strain_rate;
+  const double n = ea * phi.value + viscous_n;
+  if (out.force) *out.force += (weight * n) * de;
+  if (out.viscous_force) *out.viscous_force += (weight * viscous_n) * de;
+  if (out.stiffness) {
+    const double dn_dstrain = ea * phi.slope + ea_tau * phi.curvature * strain_rate;
+    out.stiffness->noalias() += (weight * dn_dstrain) * de * de.transpose();
+    AddKroneckerIdentity(ds, ds, weight * n, *out.stiffness);
+    if (ea_tau > 0.0) out.stiffness->noalias() += (weight * ea_tau * phi.slope) * de * de_dot.transpose();
+  }
+  if (out.damping && ea_tau > 0.0)
+    out.damping->noalias() += (weight * ea_tau * phi.slope) * de * de.transpose();
+}
+
 // Axial term at one Gauss point of weight w·L: N ∂ε/∂e with ∂ε/∂e = Sₓᵀ r'.
 // Gerstmayr & Shabana (2006), eq. 9 and 14; tangent from differentiating once more.
 void AddAxialTerms(const CableElementParameters& p, const Matrix34d& e, const Matrix34d& e_dot,
@@ -55,6 +90,9 @@ void AddAxialTerms(const CableElementParameters& p, const Matrix34d& e, const Ma
   const double ea = p.axial_stiffness;
   const double viscous_n = ea * p.axial_damping_time * strain_rate;
   const double n = ea * strain + viscous_n;
+  if (p.tension_only && p.rope_smoothing_strain > 0.0)
+    return AddSmoothRopeTerms(p, strain, strain_rate, DistributeForce(ds, a),
+                              DistributeForce(ds, a_dot), ds, weight, out);
   // A rope carries no axial force while slack, and never pushes: N = max(EA (ε + τ ε̇), 0).
   if (p.tension_only && (strain <= 0.0 || n <= 0.0)) return;
   const Vector12d de = DistributeForce(ds, a);
@@ -210,9 +248,17 @@ double CalcCableStrainEnergy(const CableElementParameters& p, const Vector12d& e
   double energy = 0.0;
   const GaussRule& axial = GetGaussRule(p.axial_gauss_points);
   for (int i = 0; i < axial.size; ++i) {
-    double eps = CalcCableStrain(p, e, axial.points[i]).axial;
-    if (p.tension_only) eps = std::max(eps, 0.0);
-    energy += 0.5 * axial.weights[i] * p.length * p.axial_stiffness * eps * eps;
+    const double eps = CalcCableStrain(p, e, axial.points[i]).axial;
+    double density = 0.5 * eps * eps;  // ∫ N dε / EA
+    if (p.tension_only && p.rope_smoothing_strain > 0.0) {
+      // ∫₀^ε φ = ¼ [ε² + ε r + s² ln((ε + r)/s)], r = √(ε² + s²).
+      const double s2 = p.rope_smoothing_strain * p.rope_smoothing_strain;
+      const double r = std::sqrt(eps * eps + s2);
+      density = 0.25 * (eps * eps + eps * r + s2 * std::log((eps + r) / p.rope_smoothing_strain));
+    } else if (p.tension_only) {
+      density = 0.5 * std::max(eps, 0.0) * std::max(eps, 0.0);
+    }
+    energy += axial.weights[i] * p.length * p.axial_stiffness * density;
   }
   const GaussRule& bending = GetGaussRule(p.bending_gauss_points);
   for (int i = 0; i < bending.size; ++i) {

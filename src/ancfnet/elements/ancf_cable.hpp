@@ -31,6 +31,10 @@ struct CableElementParameters {
   double bending_damping_time = 0.0;
   /// Rope law: N = EA max(ε + τ_ε ε̇, 0) while stretched, 0 while slack. Bending still acts.
   bool tension_only = false;
+  /// ε_s ≥ 0: with tension_only, the smooth rope law N = EA (ε + √(ε² + ε_s²))/2 (plus damping
+  /// scaled alike), which differs from EA max(ε, 0) by at most EA ε_s/2 (at ε = 0) but has no
+  /// kink, so Newton converges where threads go slack and taut. 0: the exact maximum.
+  double rope_smoothing_strain = 0.0;
   BendingModel bending_model = BendingModel::kExactCurvature;
   /// Gauss points along the element for the axial and the bending terms (docs/theory.md says why
   /// these defaults avoid membrane locking).

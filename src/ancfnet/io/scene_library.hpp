@@ -37,4 +37,10 @@ const T& Lookup(const NamedList<T>& list, const YamlValue& value, std::string_vi
   value.Fail(fmt::format("no {} named '{}'{}", what, name, SuggestName(name, names, list_label)));
 }
 
+// bending: exact (the curvature, default for cables) | simple (½ EI ∫ |r''|², default for nets).
+inline BendingModel ReadBendingModel(const YamlValue& value) {
+  return value.AsEnum<BendingModel>(
+      {{"exact", BendingModel::kExactCurvature}, {"simple", BendingModel::kSecondDerivative}});
+}
+
 }  // namespace ancfnet

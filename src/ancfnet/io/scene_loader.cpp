@@ -147,7 +147,8 @@ void ReadInitialVelocity(const YamlValue& value, const std::string& cable, Model
 void ReadCable(const YamlValue& item, const Library& library, ModelBuilder* builder) {
   const YamlMap map = item.AsMap();
   map.CheckKeys({"name", "start", "end", "elements", "material", "section", "tension_only",
-                 "axial_gauss_points", "bending_gauss_points", "initial_velocity"});
+                 "rope_smoothing_strain", "bending", "axial_gauss_points", "bending_gauss_points",
+                 "initial_velocity"});
   CableSpec spec;
   spec.name = map.Get("name").AsString();
   spec.start = map.Get("start").AsVector3();
@@ -164,6 +165,9 @@ void ReadCable(const YamlValue& item, const Library& library, ModelBuilder* buil
   CableProperties& properties = spec.properties;
   properties = MakeCableProperties(material, section);
   if (auto v = map.Find("tension_only")) properties.tension_only = v->AsBool();
+  if (auto v = map.Find("rope_smoothing_strain"))
+    properties.rope_smoothing_strain = v->AsNumberIn(0.0, 0.1);
+  if (auto v = map.Find("bending")) properties.bending_model = ReadBendingModel(*v);
   if (auto v = map.Find("axial_gauss_points")) properties.axial_gauss_points = v->AsInt(1, 8);
   if (auto v = map.Find("bending_gauss_points")) properties.bending_gauss_points = v->AsInt(1, 8);
   item.Locate([&] { builder->AddCable(spec); });

@@ -40,6 +40,7 @@ struct CableProperties {
   double bending_damping_time = 0.0;  ///< τ_κ (s)
   double radius = 0.0;                ///< for drawing (m)
   bool tension_only = false;          ///< rope law N = EA max(ε, 0)
+  double rope_smoothing_strain = 0.0;  ///< ε_s of the smooth rope law (elements/ancf_cable.hpp)
   BendingModel bending_model = BendingModel::kExactCurvature;  ///< elements/ancf_cable.hpp
   int axial_gauss_points = 3;         ///< see docs/theory.md, "Quadrature and locking"
   int bending_gauss_points = 4;

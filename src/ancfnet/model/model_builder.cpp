@@ -32,6 +32,7 @@ void ValidateProperties(const CableProperties& p) {
   RequireNonNegative(p.axial_damping_time, "axial damping time");
   RequireNonNegative(p.bending_damping_time, "bending damping time");
   RequireNonNegative(p.radius, "radius");
+  RequireNonNegative(p.rope_smoothing_strain, "rope smoothing strain");
   for (int n : {p.axial_gauss_points, p.bending_gauss_points})
     if (n < 1 || n > 8) throw InputError(fmt::format("Gauss points must be 1 … 8 (got {})", n));
 }
@@ -137,6 +138,7 @@ Index ModelBuilder::AddCable(const CableSpec& spec) {
     ep.axial_damping_time = p.axial_damping_time;
     ep.bending_damping_time = p.bending_damping_time;
     ep.tension_only = p.tension_only;
+    ep.rope_smoothing_strain = p.rope_smoothing_strain;
     ep.bending_model = p.bending_model;
     ep.axial_gauss_points = p.axial_gauss_points;
     ep.bending_gauss_points = p.bending_gauss_points;

@@ -104,6 +104,32 @@ TEST(AncfCable, KelvinVoigtJacobiansMatchFiniteDifferencesOnAnArc) {
   ExpectJacobiansMatchFiniteDifferences(p, e, Velocity());
 }
 
+TEST(AncfCable, SmoothRopeLawMatchesFiniteDifferencesAndTheExactLaw) {
+  CableElementParameters p = MakeParameters();
+  p.tension_only = true;
+  p.rope_smoothing_strain = 0.02;  // large, so that the smooth branch is exercised at all points
+  p.axial_damping_time = 0.01;
+  ExpectJacobiansMatchFiniteDifferences(p, BentElement(), Velocity());
+  p.axial_damping_time = 0.0;
+  const Vector12d e = BentElement();
+  const Vector12d f = Force(p, e, Vector12d::Zero());
+  for (int i = 0; i < 12; ++i) {
+    Vector12d ep = e, em = e;
+    ep[i] += 1e-6;
+    em[i] -= 1e-6;
+    EXPECT_NEAR(f[i], (CalcCableStrainEnergy(p, ep) - CalcCableStrainEnergy(p, em)) / 2e-6,
+                1e-6 * f.norm());
+  }
+  // Far from the band the smooth law is the exact one: 1 % stretch with ε_s = 1e-5.
+  p.rope_smoothing_strain = 1e-5;
+  p.bending_stiffness = 0.0;
+  const Vector12d stretched = StraightElement(Vector3d::Zero(), Vector3d::UnitX(), p.length, 1.01);
+  CableElementParameters exact = p;
+  exact.rope_smoothing_strain = 0.0;
+  EXPECT_NEAR(Force(p, stretched, Vector12d::Zero())[6], Force(exact, stretched, Vector12d::Zero())[6],
+              1e-7 * p.axial_stiffness);
+}
+
 TEST(AncfCable, SecondDerivativeBendingMatchesFiniteDifferences) {
   CableElementParameters p = MakeParameters();
   p.bending_model = BendingModel::kSecondDerivative;

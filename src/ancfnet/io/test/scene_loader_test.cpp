@@ -330,8 +330,8 @@ const BadScene kBadScenes[] = {
      "scene.yaml:1:1: unknown key 'gravty' at the top level; did you mean 'gravity'?"},
     {"UnknownKeyListsAllowed", Cantilever("    section: bar\n", "    section: bar\n    foo: 1\n"),
      "scene.yaml:13:5: unknown key 'foo' in 'cables[0]'; allowed keys: name, start, end, elements, "
-     "material, section, tension_only, axial_gauss_points, bending_gauss_points, "
-     "initial_velocity"},
+     "material, section, tension_only, rope_smoothing_strain, bending, axial_gauss_points, "
+     "bending_gauss_points, initial_velocity"},
     {"DuplicateKey", Cantilever("    elements: 16\n", "    elements: 16\n    elements: 8\n"),
      "scene.yaml:11:5: duplicate key 'elements' (first given at line 10)"},
     {"MissingRequiredKey", Cantilever(", density: 7800", ""),
