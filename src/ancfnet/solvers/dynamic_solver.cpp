@@ -33,7 +33,10 @@ SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings,
   const double end = settings.end_time;
   const double time_eps = 1e-9 * nominal;
   double step = nominal;
-  double next_output = state->t + (output_interval > 0.0 ? output_interval : 0.0);
+  // Output times t₀ + k Δ, computed from k so that they carry no summed round-off.
+  const double start = state->t;
+  long output_count = 1;
+  double next_output = start + (output_interval > 0.0 ? output_interval : 0.0);
   int accepted_in_a_row = 0;
   while (state->t < end - time_eps) {
     double h = std::min(step, end - state->t);
@@ -69,7 +72,8 @@ SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings,
     if (at_output) {
       if (!EmitOutput(output, *state, energy.account(), &result)) return result;
       if (output_interval > 0.0)
-        while (next_output <= state->t + time_eps) next_output += output_interval;
+        while (next_output <= state->t + time_eps)
+          next_output = start + static_cast<double>(++output_count) * output_interval;
     }
   }
   return result;
