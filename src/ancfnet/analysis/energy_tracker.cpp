@@ -24,8 +24,12 @@ double CalcStrainEnergy(const Model& model, const VectorXd& q) {
 }
 
 EnergyTracker::EnergyTracker(const Model& model, const Workspace& ws, const VectorXd& q,
-                             double load_factor)
-    : q_(q), applied_(ws.applied_force), viscous_(ws.viscous_force), load_factor_(load_factor) {
+                             double load_factor, ForceQuadrature quadrature)
+    : q_(q),
+      applied_(ws.applied_force),
+      viscous_(ws.viscous_force),
+      load_factor_(load_factor),
+      quadrature_(quadrature) {
   account_.strain = CalcStrainEnergy(model, q);
   // Gravity and the tidal potential of an orbital frame; "0.0 −" gives +0, not −0, without them.
   account_.gravity =
@@ -34,13 +38,16 @@ EnergyTracker::EnergyTracker(const Model& model, const Workspace& ws, const Vect
 
 void EnergyTracker::Advance(const Model& model, const Workspace& ws, const VectorXd& q,
                             const VectorXd& v, double load_factor) {
-  // Trapezoidal rule in q: ∫ Q · dq ≈ ½ (Q_n + Q_{n+1}) · (q_{n+1} − q_n).
+  // ∫ Q · dq ≈ (w_n Q_n + w_{n+1} Q_{n+1}) · (q_{n+1} − q_n): trapezoidal w = (½, ½); midpoint
+  // w = (0, 1), `ws` then holding Q_{n+½}.
+  const double w_then = quadrature_ == ForceQuadrature::kTrapezoidal ? 0.5 : 0.0;
+  const double w_now = 1.0 - w_then;
   double work = 0.0;
   double dissipated = 0.0;
   for (Index i = 0; i < q.size(); ++i) {
     const double dq = q[i] - q_[i];
-    work += 0.5 * (applied_[i] + ws.applied_force[i]) * dq;
-    dissipated += 0.5 * (viscous_[i] + ws.viscous_force[i]) * dq;
+    work += (w_then * applied_[i] + w_now * ws.applied_force[i]) * dq;
+    dissipated += (w_then * viscous_[i] + w_now * ws.viscous_force[i]) * dq;
   }
   // A growing gravity load (static load stepping) changes V = −λ Q_gᵀq also through λ; that part,
   // −∫ Q_gᵀq dλ, is work put in by raising the load, so the balance stays constant.

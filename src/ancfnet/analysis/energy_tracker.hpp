@@ -13,8 +13,13 @@ double CalcKineticEnergy(const Model& model, const Workspace& ws, const VectorXd
 /// Strain energy Σ U_e(q) of the cable elements plus the energy stored in the links (J).
 double CalcStrainEnergy(const Model& model, const VectorXd& q);
 
+/// Which forces stand for a step in ∫ Q · dq: the mean of those at its two ends (trapezoidal
+/// rule), or those at its middle, as the implicit midpoint rule uses them; with the latter the
+/// discrete balance of kinetic energy is exact, ΔT = (Q_ext − Q_int)(q_{n+½}) · Δq.
+enum class ForceQuadrature { kTrapezoidal, kMidpoint };
+
 /// Accumulates the work of the applied loads W = ∫ Q_applied · dq and the energy dissipated by
-/// material damping D = ∫ Q_visc · dq with the trapezoidal rule over each step, and evaluates
+/// material damping D = ∫ Q_visc · dq over each step (ForceQuadrature), and evaluates
 /// the state energies. Gravity enters through its potential V = −λ Q_gᵀ q (Q_g constant); when λ
 /// grows (static load steps) the work −∫ Q_gᵀ q dλ of raising it is added to W.
 class EnergyTracker {
@@ -22,8 +27,10 @@ class EnergyTracker {
   /// Starts at `q` and load factor λ with the forces currently in `ws` (applied_force,
   /// viscous_force).
   EnergyTracker(const Model& model, const Workspace& ws, const VectorXd& q,
-                double load_factor = 1.0);
-  /// Advances to the accepted state (q, v) with the forces in `ws` evaluated there.
+                double load_factor = 1.0,
+                ForceQuadrature quadrature = ForceQuadrature::kTrapezoidal);
+  /// Advances to the accepted state (q, v) with the forces in `ws` evaluated there (trapezoidal)
+  /// or at the middle of the step (midpoint).
   void Advance(const Model& model, const Workspace& ws, const VectorXd& q, const VectorXd& v,
                double load_factor);
   const EnergyAccount& account() const { return account_; }
@@ -34,6 +41,7 @@ class EnergyTracker {
   VectorXd applied_;
   VectorXd viscous_;
   double load_factor_ = 1.0;
+  ForceQuadrature quadrature_;
 };
 
 }  // namespace ancfnet

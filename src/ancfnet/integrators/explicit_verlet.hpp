@@ -2,6 +2,7 @@
 /// @file Explicit velocity Verlet (kick–drift–kick) with the constant mass matrix factorised
 /// once; for comparison with generalised-α. Conditionally stable: h < 2/ω_max.
 
+#include "ancfnet/analysis/energy_tracker.hpp"
 #include "ancfnet/assembly/forces.hpp"
 #include "ancfnet/integrators/step_outcome.hpp"
 #include "ancfnet/solvers/linear_solver.hpp"
@@ -21,6 +22,7 @@ class ExplicitVerletIntegrator {
   /// Rejected, with the state unchanged, when the result is not finite.
   StepOutcome Step(double h, State* state);
   const Workspace& workspace() const { return ws_; }
+  static constexpr ForceQuadrature kForceQuadrature = ForceQuadrature::kTrapezoidal;
   /// Largest stable step 2/ω_max for small motions about the configuration q (s), with ω_max
   /// bounded from above by the largest element frequency (Irons & Treharne 1971), so the
   /// estimate is on the safe side.

@@ -1,5 +1,7 @@
 #include "ancfnet/integrators/generalized_alpha.hpp"
 
+#include "ancfnet/integrators/initial_acceleration.hpp"
+
 namespace ancfnet {
 
 GeneralizedAlphaCoefficients GeneralizedAlphaCoefficients::FromSpectralRadius(double rho) {
@@ -111,17 +113,7 @@ GeneralizedAlphaIntegrator::GeneralizedAlphaIntegrator(const Model& model,
 }
 
 bool GeneralizedAlphaIntegrator::Initialize(State* state) {
-  CalcInternalForces(model_, state->q, state->v, ws_);
-  CalcExternalForces(model_, state->q, 1.0, ws_);
-  SystemMatrix mass(model_, dofs_);
-  AssembleMassMatrix(model_, ws_, &mass);
-  SparseLinearSolver solver;
-  if (!solver.Factorize(mass.matrix())) return false;
-  VectorXd rhs, a_free;
-  dofs_.Restrict(ws_.external_force - ws_.internal_force, &rhs);
-  solver.Solve(rhs, &a_free);
-  state->a.setZero();
-  dofs_.AddExpanded(a_free, 1.0, &state->a);
+  if (!CalcInitialAcceleration(model_, dofs_, ws_, state)) return false;
   a_bar_ = state->a;
   previous_ = *state;
   return true;

@@ -3,6 +3,7 @@
 /// 1993) in the form of Arnold & Brüls (2007), where the true acceleration a satisfies the
 /// equations of motion at t_{n+1} and an auxiliary acceleration ā carries the α-weighting.
 
+#include "ancfnet/analysis/energy_tracker.hpp"
 #include "ancfnet/assembly/forces.hpp"
 #include "ancfnet/integrators/step_outcome.hpp"
 #include "ancfnet/solvers/analysis_settings.hpp"
@@ -34,6 +35,7 @@ class GeneralizedAlphaIntegrator {
   StepOutcome Step(double h, State* state);
   /// Forces evaluated at the last accepted state (for energy accounting).
   const Workspace& workspace() const { return ws_; }
+  static constexpr ForceQuadrature kForceQuadrature = ForceQuadrature::kTrapezoidal;
 
   /// Newton problem of one step; its unknown is the free part of a_{n+1}.
   class StepProblem;

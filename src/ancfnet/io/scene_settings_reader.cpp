@@ -29,6 +29,7 @@ void ReadDynamicSettings(const YamlMap& map, DynamicSettings* dynamics) {
   if (auto v = map.Find("integrator")) {
     dynamics->integrator = v->AsEnum<IntegratorType>(
         {{"generalized_alpha", IntegratorType::kGeneralizedAlpha},
+         {"midpoint", IntegratorType::kImplicitMidpoint},
          {"explicit_verlet", IntegratorType::kExplicitVerlet}});
   }
   if (auto v = map.Find("spectral_radius")) dynamics->spectral_radius = v->AsNumberIn(0.0, 1.0);

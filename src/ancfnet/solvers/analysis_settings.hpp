@@ -19,7 +19,11 @@ enum class JacobianUpdate {
   kAdaptive,        ///< kept across steps; refreshed when convergence slows or fails
 };
 
-enum class IntegratorType { kGeneralizedAlpha, kExplicitVerlet };
+enum class IntegratorType {
+  kGeneralizedAlpha,  ///< generalised-α with numerical damping ρ∞ (integrators/generalized_alpha.hpp)
+  kImplicitMidpoint,  ///< implicit midpoint: conserves momentum (integrators/implicit_midpoint.hpp)
+  kExplicitVerlet,    ///< explicit velocity Verlet, conditionally stable
+};
 
 struct DynamicSettings {
   IntegratorType integrator = IntegratorType::kGeneralizedAlpha;

@@ -6,6 +6,7 @@
 #include "ancfnet/analysis/energy_tracker.hpp"
 #include "ancfnet/integrators/explicit_verlet.hpp"
 #include "ancfnet/integrators/generalized_alpha.hpp"
+#include "ancfnet/integrators/implicit_midpoint.hpp"
 
 namespace ancfnet {
 namespace {
@@ -23,7 +24,8 @@ SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings,
     result.message = "the mass matrix is singular";
     return result;
   }
-  EnergyTracker energy(model, integrator.workspace(), state->q);
+  EnergyTracker energy(model, integrator.workspace(), state->q, 1.0,
+                       Integrator::kForceQuadrature);
   energy.Advance(model, integrator.workspace(), state->q, state->v, 1.0);
   if (!EmitOutput(output, *state, energy.account(), &result)) return result;
 
@@ -86,6 +88,10 @@ SolveResult SolveDynamic(const Model& model, const DynamicSettings& settings,
   switch (settings.integrator) {
     case IntegratorType::kExplicitVerlet: {
       ExplicitVerletIntegrator integrator(model);
+      return RunTimeLoop(model, settings, output_interval, output, integrator, state);
+    }
+    case IntegratorType::kImplicitMidpoint: {
+      ImplicitMidpointIntegrator integrator(model, settings);
       return RunTimeLoop(model, settings, output_interval, output, integrator, state);
     }
     case IntegratorType::kGeneralizedAlpha:

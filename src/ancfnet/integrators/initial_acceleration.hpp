@@ -1,0 +1,15 @@
+#pragma once
+/// @file The consistent initial acceleration of an implicit scheme.
+
+#include "ancfnet/assembly/dof_map.hpp"
+#include "ancfnet/model/model.hpp"
+#include "ancfnet/state/state.hpp"
+#include "ancfnet/state/workspace.hpp"
+
+namespace ancfnet {
+
+/// Sets state->a to a₀ = M⁻¹ (Q_ext − Q_int)(q₀, v₀) on the free coordinates of `dofs` (0 on the
+/// fixed ones), with the forces left in `ws`. Returns false when the mass matrix is singular.
+bool CalcInitialAcceleration(const Model& model, const DofMap& dofs, Workspace& ws, State* state);
+
+}  // namespace ancfnet
