@@ -25,8 +25,11 @@ struct Peak {
 };
 
 Peak Deploy(int elements_per_thread) {
-  const std::filesystem::path root = std::getenv("ANCFNET_SOURCE_DIR");
+  // CTest sets ANCFNET_SOURCE_DIR; by hand, run from the repository's root.
+  const char* dir = std::getenv("ANCFNET_SOURCE_DIR");
+  const std::filesystem::path root = dir ? dir : ".";
   std::ifstream file(root / "examples/net_deploy.yaml");
+  EXPECT_TRUE(file) << "cannot open " << (root / "examples/net_deploy.yaml");
   std::stringstream text;
   text << file.rdbuf();
   std::string yaml = text.str();

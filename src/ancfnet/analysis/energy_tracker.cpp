@@ -16,11 +16,11 @@ double CalcKineticEnergy(const Model& model, const Workspace& ws, const VectorXd
   return energy;
 }
 
-double CalcStrainEnergy(const Model& model, const VectorXd& q) {
+double CalcStrainEnergy(const Model& model, const Workspace& ws, const VectorXd& q) {
   double energy = 0.0;
   for (const CableElement& element : model.elements())
     energy += CalcCableStrainEnergy(element.parameters, model.Gather(element, q));
-  return energy + CalcLinkEnergy(model, q);
+  return energy + CalcLinkEnergy(model, ws, q);
 }
 
 EnergyTracker::EnergyTracker(const Model& model, const Workspace& ws, const VectorXd& q,
@@ -30,7 +30,7 @@ EnergyTracker::EnergyTracker(const Model& model, const Workspace& ws, const Vect
       viscous_(ws.viscous_force),
       load_factor_(load_factor),
       quadrature_(quadrature) {
-  account_.strain = CalcStrainEnergy(model, q);
+  account_.strain = CalcStrainEnergy(model, ws, q);
   // Gravity and the tidal potential of an orbital frame; "0.0 −" gives +0, not −0, without them.
   account_.gravity =
       0.0 - load_factor * ws.gravity_force.dot(q) + CalcOrbitalPotential(model, ws, q);
@@ -57,11 +57,18 @@ void EnergyTracker::Advance(const Model& model, const Workspace& ws, const Vecto
   account_.work += work;
   account_.dissipated += dissipated;
   account_.kinetic = CalcKineticEnergy(model, ws, v);
-  account_.strain = CalcStrainEnergy(model, q);
+  account_.strain = CalcStrainEnergy(model, ws, q);
   account_.gravity =
       0.0 - load_factor * ws.gravity_force.dot(q) + CalcOrbitalPotential(model, ws, q);
   q_ = q;
   load_factor_ = load_factor;
+  applied_ = ws.applied_force;
+  viscous_ = ws.viscous_force;
+}
+
+void EnergyTracker::Release(const Model& model, const Workspace& ws, double released) {
+  account_.dissipated += released;
+  account_.strain = CalcStrainEnergy(model, ws, q_);
   applied_ = ws.applied_force;
   viscous_ = ws.viscous_force;
 }

@@ -10,8 +10,8 @@ namespace ancfnet {
 
 /// Kinetic energy ½ Σ v_eᵀ M_e v_e (J).
 double CalcKineticEnergy(const Model& model, const Workspace& ws, const VectorXd& v);
-/// Strain energy Σ U_e(q) of the cable elements plus the energy stored in the links (J).
-double CalcStrainEnergy(const Model& model, const VectorXd& q);
+/// Strain energy Σ U_e(q) of the cable elements plus the energy stored in the intact links (J).
+double CalcStrainEnergy(const Model& model, const Workspace& ws, const VectorXd& q);
 
 /// Which forces stand for a step in ∫ Q · dq: the mean of those at its two ends (trapezoidal
 /// rule), or those at its middle, as the implicit midpoint rule uses them; with the latter the
@@ -33,6 +33,10 @@ class EnergyTracker {
   /// or at the middle of the step (midpoint).
   void Advance(const Model& model, const Workspace& ws, const VectorXd& q, const VectorXd& v,
                double load_factor);
+  /// After links failed at the current state: their stored energy `released` (J) leaves the
+  /// strain energy and is counted as dissipated, and the forces now in `ws` (without them)
+  /// start the next step.
+  void Release(const Model& model, const Workspace& ws, double released);
   const EnergyAccount& account() const { return account_; }
 
  private:

@@ -1,6 +1,9 @@
 #include "ancfnet/analysis/probe.hpp"
 
+#include <limits>
+
 #include "ancfnet/analysis/net_metrics.hpp"
+#include "ancfnet/assembly/link_forces.hpp"
 
 namespace ancfnet {
 
@@ -19,8 +22,25 @@ std::vector<std::string> ProbeColumns(const Probe& probe) {
       return {n + ".x", n + ".y", n + ".z"};
     case ProbeQuantity::kDistance:
       return {n + ".distance"};
+    case ProbeQuantity::kMaxTension:
+      return {n + ".tension", n + ".thread"};
+    case ProbeQuantity::kLinkForce:
+      return {n + ".tension", n + ".fx", n + ".fy", n + ".fz"};
   }
   return {};
+}
+
+ThreadTension CalcMaxThreadTension(const Model& model, const Net& net, const VectorXd& q) {
+  ThreadTension result{.tension = -std::numeric_limits<double>::infinity(), .thread = -1};
+  for (std::size_t j = 0; j < net.threads.size(); ++j) {
+    const Cable& cable = model.cables()[net.threads[j]];
+    for (Index e = cable.first_element; e < cable.first_element + cable.num_elements; ++e) {
+      const CableElement& element = model.elements()[e];
+      const double t = CalcCableMaxTension(element.parameters, model.Gather(element, q));
+      if (t > result.tension) result = {.tension = t, .thread = static_cast<Index>(j)};
+    }
+  }
+  return result;
 }
 
 Vector3d CalcNetCentroid(const Model& model, const Net& net, const VectorXd& q) {
@@ -59,6 +79,21 @@ void EvaluateProbe(const Probe& probe, const Model& model, const State& state,
       const Net& net = model.nets()[probe.net];
       values->push_back(
           CalcDistanceTravelled(probe.reference, CalcNetCentroid(model, net, state.q), net.axis));
+      break;
+    }
+    case ProbeQuantity::kMaxTension: {
+      const ThreadTension t = CalcMaxThreadTension(model, model.nets()[probe.net], state.q);
+      values->insert(values->end(), {t.tension, static_cast<double>(t.thread)});
+      break;
+    }
+    case ProbeQuantity::kLinkForce: {
+      if (state.link_broken[probe.link]) {
+        values->insert(values->end(), {0.0, 0.0, 0.0, 0.0});
+        break;
+      }
+      const SpringDamperResult r = CalcLinkState(model.links()[probe.link], state.q, state.v);
+      values->insert(values->end(),
+                     {r.tension, r.force_on_2.x(), r.force_on_2.y(), r.force_on_2.z()});
       break;
     }
   }

@@ -17,17 +17,29 @@ enum class ProbeQuantity {
   kMouthArea,   ///< NAME.area: the net's perimeter polygon projected normal to its axis (m²)
   kCentroid,    ///< NAME.x/y/z: mean position of the net's knots (m)
   kDistance,    ///< NAME.distance: travel of that centroid along the net's axis (m)
+  kMaxTension,  ///< NAME.tension, NAME.thread: largest thread tension of a net (N) and its thread
+  kLinkForce,   ///< NAME.tension, NAME.fx/fy/fz: a link's tension T (N) and force on its 2nd point
 };
 
 /// A named probe. Position and velocity probes read a point (a cable material point or a point
-/// mass); energy probes read the whole system; net probes read net `net`.
+/// mass); energy probes read the whole system; net probes read net `net`; link probes link `link`
+/// (0 once it has failed).
 struct Probe {
   std::string name;
   ProbeQuantity quantity = ProbeQuantity::kPosition;
   PointLocation point;
   Index net = -1;
+  Index link = -1;
   Vector3d reference = Vector3d::Zero();  ///< kDistance: the centroid at the start
 };
+
+/// The largest elastic tension over a net's threads (N, at the elements' axial Gauss points) and
+/// the index of its thread in the net (cable net.threads[thread], named NAME.t<thread>).
+struct ThreadTension {
+  double tension = 0.0;
+  Index thread = -1;
+};
+ThreadTension CalcMaxThreadTension(const Model& model, const Net& net, const VectorXd& q);
 
 /// Mean position of a net's knots (m).
 Vector3d CalcNetCentroid(const Model& model, const Net& net, const VectorXd& q);

@@ -99,7 +99,7 @@ void AssembleIterationMatrix(const Model& model, const VectorXd& q, const Vector
     if (need_damping) matrix->AddElementBlock(e, ws.element_damping[e], weights.damping);
   }
   AddLinkForces(model, q, v, ws);
-  AddLinkJacobians(model, q, v, weights, matrix);
+  AddLinkJacobians(model, q, v, weights, ws, matrix);
   AddOrbitalFrameForces(model, q, v, ws);
   AddOrbitalFrameJacobians(model, ws, weights.stiffness, weights.damping, matrix);
   if (weights.mass != 0.0) AddPointMassMatrix(model, weights.mass, matrix);

@@ -28,7 +28,10 @@ Vector3d Relative(const SpringDamperLink& link, const VectorXd& x) {
 }  // namespace
 
 void AddLinkForces(const Model& model, const VectorXd& q, const VectorXd& v, Workspace& ws) {
-  for (const SpringDamperLink& link : model.links()) {
+  const auto& links = model.links();
+  for (std::size_t l = 0; l < links.size(); ++l) {
+    if (ws.link_broken[l]) continue;
+    const SpringDamperLink& link = links[l];
     const Vector3d d = Relative(link, q);
     const Vector3d d_dot = Relative(link, v);
     const Vector3d force = CalcSpringDamper(link.law, link.natural_length, d, d_dot).force_on_2;
@@ -43,9 +46,11 @@ void AddLinkForces(const Model& model, const VectorXd& q, const VectorXd& v, Wor
 }
 
 void AddLinkJacobians(const Model& model, const VectorXd& q, const VectorXd& v,
-                      const IterationWeights& weights, SystemMatrix* matrix) {
+                      const IterationWeights& weights, const Workspace& ws,
+                      SystemMatrix* matrix) {
   const auto& links = model.links();
   for (std::size_t l = 0; l < links.size(); ++l) {
+    if (ws.link_broken[l]) continue;
     const SpringDamperLink& link = links[l];
     const auto out =
         CalcSpringDamper(link.law, link.natural_length, Relative(link, q), Relative(link, v));
@@ -57,12 +62,20 @@ void AddLinkJacobians(const Model& model, const VectorXd& q, const VectorXd& v,
   }
 }
 
-double CalcLinkEnergy(const Model& model, const VectorXd& q) {
+double CalcLinkEnergy(const SpringDamperLink& link, const VectorXd& q) {
+  return CalcSpringDamper(link.law, link.natural_length, Relative(link, q), Vector3d::Zero()).energy;
+}
+
+double CalcLinkEnergy(const Model& model, const Workspace& ws, const VectorXd& q) {
   double energy = 0.0;
-  for (const SpringDamperLink& link : model.links())
-    energy += CalcSpringDamper(link.law, link.natural_length, Relative(link, q), Vector3d::Zero())
-                  .energy;
+  for (std::size_t l = 0; l < model.links().size(); ++l)
+    if (!ws.link_broken[l]) energy += CalcLinkEnergy(model.links()[l], q);
   return energy;
+}
+
+SpringDamperResult CalcLinkState(const SpringDamperLink& link, const VectorXd& q,
+                                 const VectorXd& v) {
+  return CalcSpringDamper(link.law, link.natural_length, Relative(link, q), Relative(link, v));
 }
 
 }  // namespace ancfnet

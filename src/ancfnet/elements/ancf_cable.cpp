@@ -1,6 +1,8 @@
 #include "ancfnet/elements/ancf_cable.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "ancfnet/common/quadrature.hpp"
 #include "ancfnet/elements/hermite_shape.hpp"
@@ -242,6 +244,21 @@ CableStrain CalcCableStrain(const CableElementParameters& p, const Vector12d& e,
   const double g = a.squaredNorm();
   strain.curvature = a.cross(b).norm() / (g * std::sqrt(g));
   return strain;
+}
+
+double CalcCableAxialForce(const CableElementParameters& p, double strain) {
+  if (!p.tension_only) return p.axial_stiffness * strain;
+  if (p.rope_smoothing_strain > 0.0)
+    return p.axial_stiffness * CalcSmoothMax(strain, p.rope_smoothing_strain).value;
+  return p.axial_stiffness * std::max(strain, 0.0);
+}
+
+double CalcCableMaxTension(const CableElementParameters& p, const Vector12d& e) {
+  const GaussRule& axial = GetGaussRule(p.axial_gauss_points);
+  double tension = -std::numeric_limits<double>::infinity();
+  for (int i = 0; i < axial.size; ++i)
+    tension = std::max(tension, CalcCableAxialForce(p, CalcCableStrain(p, e, axial.points[i]).axial));
+  return tension;
 }
 
 double CalcCableStrainEnergy(const CableElementParameters& p, const Vector12d& e) {

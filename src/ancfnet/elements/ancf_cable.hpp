@@ -74,4 +74,12 @@ struct CableStrain {
 };
 CableStrain CalcCableStrain(const CableElementParameters& p, const Vector12d& e, double xi);
 
+/// Elastic axial force (N) for an axial strain ε: EA ε; for ropes EA max(ε, 0), or with the
+/// smooth rope law EA φ(ε), φ = (ε + √(ε² + ε_s²))/2 (docs/theory.md, "Tension-only law").
+double CalcCableAxialForce(const CableElementParameters& p, double strain);
+
+/// Largest elastic axial force (N) over the element's axial Gauss points, where the element's
+/// forces are evaluated (for outputs and thread failure).
+double CalcCableMaxTension(const CableElementParameters& p, const Vector12d& e);
+
 }  // namespace ancfnet

@@ -12,6 +12,7 @@ ExplicitVerletIntegrator::ExplicitVerletIntegrator(const Model& model)
     : model_(model), ws_(model), dofs_(DofMap::FreeCoordinates(model)) {}
 
 bool ExplicitVerletIntegrator::Initialize(State* state) {
+  ws_.link_broken = state->link_broken;
   SystemMatrix mass(model_, dofs_);
   AssembleMassMatrix(model_, ws_, &mass);
   if (!mass_solver_.Factorize(mass.matrix())) return false;

@@ -14,7 +14,8 @@ class ExplicitVerletIntegrator {
  public:
   explicit ExplicitVerletIntegrator(const Model& model);
 
-  /// Factorises the mass matrix and sets a₀ = M⁻¹ (Q_ext − Q_int). False if M is singular.
+  /// Factorises the mass matrix and sets a₀ = M⁻¹ (Q_ext − Q_int) with the state's broken links.
+  /// False if M is singular.
   bool Initialize(State* state);
   /// v_{n+½} = v_n + h/2 a_n; q_{n+1} = q_n + h v_{n+½};
   /// a_{n+1} = M⁻¹ (Q_ext − Q_int)(q_{n+1}, v_{n+½}); v_{n+1} = v_{n+½} + h/2 a_{n+1}

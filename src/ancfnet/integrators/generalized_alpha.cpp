@@ -113,6 +113,8 @@ GeneralizedAlphaIntegrator::GeneralizedAlphaIntegrator(const Model& model,
 }
 
 bool GeneralizedAlphaIntegrator::Initialize(State* state) {
+  ws_.link_broken = state->link_broken;
+  newton_.InvalidateJacobian();  // also called after a failure: the links have changed
   if (!CalcInitialAcceleration(model_, dofs_, ws_, state)) return false;
   a_bar_ = state->a;
   previous_ = *state;

@@ -29,7 +29,8 @@ class GeneralizedAlphaIntegrator {
   GeneralizedAlphaIntegrator(const Model& model, const DynamicSettings& settings);
 
   /// Sets the consistent initial acceleration a₀ = M⁻¹ (Q_ext − Q_int)(q₀, v₀) and ā₀ = a₀.
-  /// Returns false when the mass matrix is singular.
+  /// Returns false when the mass matrix is singular. Called again after a failure: the state's
+  /// broken links are taken over and the stored Jacobian dropped.
   bool Initialize(State* state);
   /// Advances `state` by h. On rejection the state is left unchanged.
   StepOutcome Step(double h, State* state);

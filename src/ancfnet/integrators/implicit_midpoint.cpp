@@ -81,6 +81,8 @@ ImplicitMidpointIntegrator::ImplicitMidpointIntegrator(const Model& model,
 }
 
 bool ImplicitMidpointIntegrator::Initialize(State* state) {
+  ws_.link_broken = state->link_broken;
+  newton_.InvalidateJacobian();  // also called after a failure: the links have changed
   if (!CalcInitialAcceleration(model_, dofs_, ws_, state)) return false;
   previous_ = *state;
   midpoint_ = *state;

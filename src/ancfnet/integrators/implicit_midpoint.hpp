@@ -23,7 +23,8 @@ class ImplicitMidpointIntegrator {
   ImplicitMidpointIntegrator(const Model& model, const DynamicSettings& settings);
 
   /// Sets the consistent initial acceleration a₀ = M⁻¹ (Q_ext − Q_int)(q₀, v₀) (reported only;
-  /// the scheme itself does not need it). Returns false when the mass matrix is singular.
+  /// the scheme itself does not need it). Returns false when the mass matrix is singular. Called
+  /// again after a failure: the state's broken links are taken over.
   bool Initialize(State* state);
   /// Advances `state` by h; state->a becomes the step's mean acceleration (v_{n+1} − v_n)/h.
   /// On rejection the state is left unchanged.

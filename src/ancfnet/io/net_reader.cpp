@@ -102,7 +102,7 @@ void ReadNet(const YamlValue& item, const Library& library, ModelBuilder* builde
       "name", "type", "material", "section", "elements_per_thread", "tension_only",
       "rope_smoothing_strain", "bending",
       "natural_length_ratio", "knot_model", "knot_mass", "knot_link", "velocity",
-      "packing_ratio", "bullets"};
+      "packing_ratio", "bullets", "thread_breaking_force", "link_breaking_force"};
   if (type == 2) keys.insert(keys.end(), {"knot_positions", "threads", "perimeter", "axis"});
   else keys.insert(keys.end(), {"side", "meshes", "mesh_size", "center", "axis_u", "axis_v"});
   map.CheckKeys(keys);
@@ -138,6 +138,8 @@ void ReadNet(const YamlValue& item, const Library& library, ModelBuilder* builde
   if (auto v = map.Find("velocity")) spec.velocity = v->AsVector3();
   if (auto v = map.Find("packing_ratio")) spec.packing_ratio = v->AsNumberIn(1e-6, 1.0);
   if (auto v = map.Find("bullets")) ReadBullets(*v, &spec);
+  if (auto v = map.Find("thread_breaking_force")) spec.thread_breaking_force = v->AsPositive();
+  if (auto v = map.Find("link_breaking_force")) spec.link_breaking_force = v->AsPositive();
   item.Locate([&] { AddNet(*builder, spec); });
   for (std::size_t k = 0; k < spec.topology.knots.size(); ++k)
     point_masses->push_back(KnotName(spec.name, static_cast<Index>(k)));

@@ -1,5 +1,7 @@
 #include "ancfnet/io/scene_loader.hpp"
 
+#include <limits>
+
 #include <cmath>
 #include <fstream>
 #include <optional>
@@ -113,18 +115,21 @@ void ReadPointMass(const YamlValue& item, ModelBuilder* builder,
   names->push_back(name);
 }
 
-// spring_dampers: - {name, from: POINT, to: POINT, law: LAW, natural_length}
+// spring_dampers: - {name, from: POINT, to: POINT, law: LAW, natural_length, breaking_force}
 void ReadSpringDamper(const YamlValue& item, const std::vector<std::string>& point_masses,
                       ModelBuilder* builder) {
   const YamlMap map = item.AsMap();
-  map.CheckKeys({"name", "from", "to", "law", "natural_length"});
+  map.CheckKeys({"name", "from", "to", "law", "natural_length", "breaking_force"});
   const std::string name = map.Get("name").AsString();
   const CablePointRef from = ReadPoint(map.Get("from"), point_masses);
   const CablePointRef to = ReadPoint(map.Get("to"), point_masses);
   const ConnectionLaw law = ReadConnectionLaw(map.Get("law"));
   std::optional<double> natural_length;
   if (auto v = map.Find("natural_length")) natural_length = v->AsNonNegative();
-  item.Locate([&] { builder->AddSpringDamper(name, from, to, law, natural_length); });
+  double breaking_force = std::numeric_limits<double>::infinity();
+  if (auto v = map.Find("breaking_force")) breaking_force = v->AsPositive();
+  item.Locate(
+      [&] { builder->AddSpringDamper(name, from, to, law, natural_length, breaking_force); });
 }
 
 // initial_velocity: [vx, vy, vz], or {linear: v, angular: ω, center: c} for v + ω × (r − c).
@@ -148,7 +153,7 @@ void ReadCable(const YamlValue& item, const Library& library, ModelBuilder* buil
   const YamlMap map = item.AsMap();
   map.CheckKeys({"name", "start", "end", "elements", "material", "section", "tension_only",
                  "rope_smoothing_strain", "bending", "axial_gauss_points", "bending_gauss_points",
-                 "initial_velocity"});
+                 "initial_velocity", "breaking_force"});
   CableSpec spec;
   spec.name = map.Get("name").AsString();
   spec.start = map.Get("start").AsVector3();
@@ -170,6 +175,7 @@ void ReadCable(const YamlValue& item, const Library& library, ModelBuilder* buil
   if (auto v = map.Find("bending")) properties.bending_model = ReadBendingModel(*v);
   if (auto v = map.Find("axial_gauss_points")) properties.axial_gauss_points = v->AsInt(1, 8);
   if (auto v = map.Find("bending_gauss_points")) properties.bending_gauss_points = v->AsInt(1, 8);
+  if (auto v = map.Find("breaking_force")) spec.breaking_force = v->AsPositive();
   item.Locate([&] { builder->AddCable(spec); });
   if (auto v = map.Find("initial_velocity")) ReadInitialVelocity(*v, spec.name, builder);
 }
@@ -229,14 +235,18 @@ std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
          {"energy", ProbeQuantity::kEnergy},
          {"mouth_area", ProbeQuantity::kMouthArea},
          {"centroid", ProbeQuantity::kCentroid},
-         {"distance", ProbeQuantity::kDistance}});
+         {"distance", ProbeQuantity::kDistance},
+         {"max_tension", ProbeQuantity::kMaxTension},
+         {"link_force", ProbeQuantity::kLinkForce}});
     const bool whole_system = probe.quantity == ProbeQuantity::kEnergy;
     const bool of_a_point =
         probe.quantity == ProbeQuantity::kPosition || probe.quantity == ProbeQuantity::kVelocity;
     if (auto at = map.Find("at"); at && whole_system)
       at->Fail("an energy probe reads the whole system and takes no point");
+    const bool of_a_link = probe.quantity == ProbeQuantity::kLinkForce;
     if (of_a_point) map.CheckKeys({"name", "quantity", "at"});
     else if (whole_system) map.CheckKeys({"name", "quantity"});
+    else if (of_a_link) map.CheckKeys({"name", "quantity", "link"});
     else map.CheckKeys({"name", "quantity", "net"});
     const YamlValue name = map.Get("name");
     probe.name = name.AsString();
@@ -246,6 +256,17 @@ std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
       const YamlValue at = map.Get("at");
       const CablePointRef point = ReadPoint(at, point_masses);
       probe.point = at.Locate([&] { return model.LocatePoint(point.cable, point.s); });
+    } else if (of_a_link) {
+      const YamlValue link = map.Get("link");
+      const std::string link_name = link.AsString();
+      std::vector<std::string_view> names;
+      for (std::size_t i = 0; i < model.links().size(); ++i) {
+        names.push_back(model.links()[i].name);
+        if (model.links()[i].name == link_name) probe.link = static_cast<Index>(i);
+      }
+      if (probe.link < 0)
+        link.Fail(fmt::format("no spring-damper named '{}'{}", link_name,
+                              SuggestName(link_name, names, "spring-dampers")));
     } else if (!whole_system) {
       const YamlValue net = map.Get("net");
       const std::string net_name = net.AsString();

@@ -1,5 +1,7 @@
 #include "ancfnet/io/summary_writer.hpp"
 
+#include "ancfnet/model/net_builder.hpp"
+
 #include <cmath>
 #include <fmt/format.h>
 #include <fstream>
@@ -22,6 +24,13 @@ Json EnergyJson(const EnergyAccount& energy) {
           {"work", Number(energy.work)},
           {"dissipated", Number(energy.dissipated)},
           {"balance", Number(energy.Balance())}};
+}
+
+Json FailuresJson(const std::vector<FailureEvent>& failures) {
+  Json list = Json::array();
+  for (const FailureEvent& f : failures)
+    list.push_back({{"time", Number(f.time)}, {"what", f.what}, {"tension", Number(f.tension)}});
+  return list;
 }
 
 Json ProbeJson(const Probe& probe, const Model& model, const State& state,
@@ -52,6 +61,13 @@ Json ProbeJson(const Probe& probe, const Model& model, const State& state,
       return {{"mouth_area", Number(values[0])}};
     case ProbeQuantity::kDistance:
       return {{"distance", Number(values[0])}};
+    case ProbeQuantity::kMaxTension:
+      return {{"max_tension", {{"tension", Number(values[0])},
+                               {"thread", ThreadName(model.nets()[probe.net].name,
+                                                     static_cast<Index>(values[1]))}}}};
+    case ProbeQuantity::kLinkForce:
+      return {{"link_force", {{"tension", Number(values[0])},
+                              {"force", {Number(values[1]), Number(values[2]), Number(values[3])}}}}};
   }
   return Json::object();
 }
@@ -75,6 +91,7 @@ void WriteSummaryJson(const std::filesystem::path& path, const RunSummary& summa
       {"wall_time_s", Number(summary.wall_time_s)},
       {"output_time_s", Number(summary.output_time_s)},
       {"energy", EnergyJson(summary.energy)},
+      {"failures", FailuresJson(summary.failures)},
       {"probes", probe_values},
   };
   std::ofstream file(path);

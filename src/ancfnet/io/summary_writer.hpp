@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "ancfnet/analysis/energy.hpp"
+#include "ancfnet/analysis/failure.hpp"
 #include "ancfnet/analysis/probe.hpp"
 #include "ancfnet/model/model.hpp"
 #include "ancfnet/state/state.hpp"
@@ -26,13 +27,14 @@ struct RunSummary {
   double wall_time_s = 0.0;    ///< whole analysis, outputs included (s)
   double output_time_s = 0.0;  ///< part of it spent writing probes.csv and VTK frames (s)
   EnergyAccount energy;      ///< energies at the end (J)
+  std::vector<FailureEvent> failures;  ///< threads and connections that broke
 };
 
 /// Writes `summary` and the final values of `probes` (EvaluateProbe on `state` with
 /// summary.energy) to `path` as JSON, indented by 2:
 /// `{"status": "completed"|"failed", "message", "analysis", "time", "steps", "newton_iterations",
 /// "jacobian_updates", "step_cuts", "wall_time_s", "output_time_s", "energy": {"kinetic", "strain", "gravity",
-/// "work", "dissipated", "balance"}, "probes": {NAME: {"position": [x, y, z]} |
+/// "work", "dissipated", "balance"}, "failures": [{"time", "what", "tension"}], "probes": {NAME: {"position": [x, y, z]} |
 /// {"velocity": [vx, vy, vz]} | {"energy": {"kinetic", …}}}}`. Units as in the CSV (s, m, m/s,
 /// J). Non-finite numbers are written as null. Throws InputError "cannot write PATH" on failure.
 void WriteSummaryJson(const std::filesystem::path& path, const RunSummary& summary,

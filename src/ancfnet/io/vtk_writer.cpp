@@ -78,9 +78,7 @@ void VtkSeriesWriter::CollectSamples(const Model& model, const State& state) {
         const double xi = static_cast<double>(i) / points_per_element_;
         const HermiteShape shape = CalcHermiteShape(xi, p.length);
         const CableStrain strain = CalcCableStrain(p, e, xi);
-        const double tension = (p.tension_only && strain.axial < 0.0)
-                                   ? 0.0
-                                   : p.axial_stiffness * strain.axial;
+        const double tension = CalcCableAxialForce(p, strain.axial);
         samples_.push_back({InterpolatePosition(e, shape.s), InterpolatePosition(e_dot, shape.s),
                             strain.axial, strain.curvature, tension});
       }

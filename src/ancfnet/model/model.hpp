@@ -3,6 +3,7 @@
 /// conditions, initial state). Built once by ModelBuilder, read-only afterwards.
 
 #include <array>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -22,6 +23,9 @@ struct Cable {
   Index num_elements = 0;
   double length = 0.0;  ///< reference (natural, stress-free) length (m)
   CableProperties properties;
+  /// Tension (N) at which the cable fails: every link holding it then breaks (analysis/
+  /// failure.hpp). Infinite: never.
+  double breaking_force = std::numeric_limits<double>::infinity();
 };
 
 /// Where the coordinates of a cable node live: its position r (3 coordinates from
@@ -70,6 +74,11 @@ struct SpringDamperLink {
   double natural_length = 0.0;  ///< L₀ (m), ≥ 0; 0: a zero-length link with isotropic damping
   PointLocation first;
   PointLocation second;
+  Index first_cable = -1;   ///< cable of the first point, or −1 for a point mass
+  Index second_cable = -1;  ///< cable of the second point, or −1
+  /// Tension T (N) at which the link fails and is removed (analysis/failure.hpp). Infinite:
+  /// never.
+  double breaking_force = std::numeric_limits<double>::infinity();
 };
 
 /// A net as built by AddNet (model/net_builder.hpp): which point masses are its knots and which

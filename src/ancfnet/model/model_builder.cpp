@@ -20,6 +20,12 @@ void RequirePositive(double value, const char* what) {
     throw InputError(fmt::format("{} must be > 0 (got {})", what, value));
 }
 
+// > 0, infinity allowed (never breaks); NaN refused.
+void RequireBreakingForce(double value, const char* what) {
+  if (!(value > 0.0))
+    throw InputError(fmt::format("{} must be > 0 (got {})", what, value));
+}
+
 void RequireNonNegative(double value, const char* what) {
   if (!(value >= 0.0 && std::isfinite(value)))
     throw InputError(fmt::format("{} must be ≥ 0 (got {})", what, value));
@@ -93,6 +99,12 @@ Index ModelBuilder::AddCable(const CableSpec& spec) {
   RequireNonNegative(spec.natural_length, "natural length");
   const double length = spec.natural_length > 0.0 ? spec.natural_length : distance;
   ValidateProperties(spec.properties);
+  RequireBreakingForce(spec.breaking_force, "breaking force of a cable");
+  if (std::isfinite(spec.breaking_force) && !(spec.start_knot.empty() && spec.end_knot.empty()))
+    throw InputError(fmt::format(
+        "cable '{}' can fail but shares a knot's position (an ideal knot), so it could never come "
+        "off: use compliant knots (links) for threads that break",
+        spec.name));
 
   Cable cable;
   cable.name = spec.name;
@@ -101,6 +113,7 @@ Index ModelBuilder::AddCable(const CableSpec& spec) {
   cable.num_elements = spec.num_elements;
   cable.length = length;
   cable.properties = spec.properties;
+  cable.breaking_force = spec.breaking_force;
   const Index cable_index = static_cast<Index>(model_.cables_.size());
   model_.cables_.push_back(cable);
 
@@ -174,11 +187,19 @@ void ModelBuilder::FixPointMass(const std::string& name) {
 
 void ModelBuilder::AddSpringDamper(const std::string& name, const CablePointRef& first,
                                    const CablePointRef& second, const ConnectionLaw& law,
-                                   std::optional<double> natural_length) {
+                                   std::optional<double> natural_length,
+                                   double breaking_force) {
   ValidateConnectionLaw(law);
+  RequireBreakingForce(breaking_force, "breaking force of a spring-damper");
+  const auto cable_of = [&](const std::string& point) {
+    return model_.FindPointMass(point) >= 0 ? Index{-1} : model_.FindCable(point);
+  };
   SpringDamperLink link{.name = name, .law = law,
                         .first = model_.LocatePoint(first.cable, first.s),
-                        .second = model_.LocatePoint(second.cable, second.s)};
+                        .second = model_.LocatePoint(second.cable, second.s),
+                        .first_cable = cable_of(first.cable),
+                        .second_cable = cable_of(second.cable),
+                        .breaking_force = breaking_force};
   const double distance = (Model::Locate(link.second, model_.initial_positions_) -
                            Model::Locate(link.first, model_.initial_positions_)).norm();
   link.natural_length = natural_length.value_or(distance);

@@ -3,6 +3,7 @@
 /// Python bindings go through it, so every check on the input lives here once.
 
 #include <array>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -23,6 +24,9 @@ struct CableSpec {
   double natural_length = 0.0;  ///< m; 0: |end − start|
   std::string start_knot = {};  ///< point mass whose position the start shares ("" : none)
   std::string end_knot = {};    ///< point mass whose position the end shares ("" : none)
+  /// Tension (N) at which the cable fails and the links holding it break; > 0, infinite: never.
+  /// A cable that can fail cannot share a knot's position (it would stay attached).
+  double breaking_force = std::numeric_limits<double>::infinity();
 };
 
 /// A point of a named cable at fraction s ∈ [0, 1] of its reference length.
@@ -56,10 +60,12 @@ class ModelBuilder {
   /// Fixes the position of a point mass.
   void FixPointMass(const std::string& name);
   /// Adds a spring-damper between two points, each a point mass (named by `cable`, s ignored) or
-  /// a cable point. Its natural length defaults to the initial distance of the points.
+  /// a cable point. Its natural length defaults to the initial distance of the points. It fails
+  /// (is removed) once its tension reaches `breaking_force` (N, > 0; infinite: never).
   void AddSpringDamper(const std::string& name, const CablePointRef& first,
                        const CablePointRef& second, const ConnectionLaw& law,
-                       std::optional<double> natural_length = std::nullopt);
+                       std::optional<double> natural_length = std::nullopt,
+                       double breaking_force = std::numeric_limits<double>::infinity());
   /// Fixes position and slope of the node at `at` (which must be a node).
   void AddClamp(const CablePointRef& at);
   /// Fixes the position of the node at `at`; the slope stays free.

@@ -1,5 +1,7 @@
 #include "ancfnet/model/net_builder.hpp"
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 #include "ancfnet/common/error.hpp"
@@ -28,6 +30,12 @@ void Validate(const NetSpec& spec) {
     throw InputError("a net's launch axis must be a non-zero vector");
   if (spec.knot_model == KnotModel::kCompliant && !(spec.knot_mass > 0.0))
     throw InputError("compliant knots need a knot mass > 0");
+  const bool can_fail =
+      std::isfinite(spec.thread_breaking_force) || std::isfinite(spec.link_breaking_force);
+  if (can_fail && spec.knot_model != KnotModel::kCompliant)
+    throw InputError(
+        "threads and links can only fail with compliant knots: with ideal knots the threads share "
+        "the knots' coordinates and could never come off");
   for (const KnotMass& extra : spec.knot_masses) {
     if (extra.knot < 0 || extra.knot >= static_cast<Index>(spec.topology.knots.size()))
       throw InputError(fmt::format("no knot {} in net '{}'", extra.knot, spec.name));
@@ -75,7 +83,8 @@ void AddNet(ModelBuilder& builder, const NetSpec& spec) {
                     .num_elements = spec.elements_per_thread,
                     .properties = spec.thread,
                     .natural_length = spec.natural_length_ratio *
-                                      (topology.knots[b] - topology.knots[a]).norm()};
+                                      (topology.knots[b] - topology.knots[a]).norm(),
+                    .breaking_force = spec.thread_breaking_force};
     if (ideal) {
       cable.start_knot = KnotName(spec.name, a);
       cable.end_knot = KnotName(spec.name, b);
@@ -86,9 +95,9 @@ void AddNet(ModelBuilder& builder, const NetSpec& spec) {
     builder.SetInitialVelocity(name, spec.velocity);
     if (!ideal) {
       builder.AddSpringDamper(name + ".start", {KnotName(spec.name, a)}, {name, 0.0},
-                              spec.link_law, 0.0);
+                              spec.link_law, 0.0, spec.link_breaking_force);
       builder.AddSpringDamper(name + ".end", {KnotName(spec.name, b)}, {name, 1.0},
-                              spec.link_law, 0.0);
+                              spec.link_law, 0.0, spec.link_breaking_force);
     }
   }
   // The threads' velocities above also set the shared knot coordinates of ideal knots.

@@ -4,6 +4,7 @@
 /// position coordinates) or compliant (a knot mass joined to each thread end by a spring-damper,
 /// the model of the seed paper), corner masses ("bullets") and a packed initial state.
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,10 @@ struct NetSpec {
   double packing_ratio = 1.0;
   std::vector<KnotMass> knot_masses;  ///< bullets and other masses at knots
   Vector3d axis = Vector3d::UnitZ();  ///< launch axis (normal of the net), for the metrics
+  /// Tension (N) at which a thread fails and comes off its knots; compliant knots only.
+  double thread_breaking_force = std::numeric_limits<double>::infinity();
+  /// Tension (N) at which a knot link fails; compliant knots only.
+  double link_breaking_force = std::numeric_limits<double>::infinity();
 };
 
 /// Adds the net to `builder`: point masses "NAME.k<i>" for the knots, cables "NAME.t<j>" for the

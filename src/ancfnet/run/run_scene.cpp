@@ -103,6 +103,7 @@ RunSummary RunScene(const Scene& scene, const RunOptions& options) {
   summary.wall_time_s = progress.elapsed_s();
   summary.output_time_s = std::chrono::duration<double>(output_time).count();
   summary.energy = writers.last_energy();
+  summary.failures = result.failures;
   // Final values are those of the last state written, which is always finite.
   WriteSummaryJson(options.output_dir / "summary.json", summary, scene.probes, scene.model,
                    last_written);

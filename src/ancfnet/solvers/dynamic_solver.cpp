@@ -40,6 +40,7 @@ SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings,
   long output_count = 1;
   double next_output = start + (output_interval > 0.0 ? output_interval : 0.0);
   int accepted_in_a_row = 0;
+  const bool can_fail = CanFail(model);
   while (state->t < end - time_eps) {
     double h = std::min(step, end - state->t);
     if (output_interval > 0.0) h = std::min(h, next_output - state->t);
@@ -65,6 +66,19 @@ SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings,
     if (output_interval > 0.0 && std::abs(state->t - next_output) <= time_eps)
       state->t = next_output;
     energy.Advance(model, integrator.workspace(), state->q, state->v, 1.0);
+    if (can_fail) {
+      const FailureCheck check = ApplyFailures(model, state, &result.failures);
+      if (check.broken_links > 0) {
+        // The forces jump: restart from the consistent acceleration without the broken links.
+        if (!integrator.Initialize(state)) {
+          result.completed = false;
+          result.message = fmt::format("the mass matrix is singular after a failure at t = {:.9g} s",
+                                       state->t);
+          return result;
+        }
+        energy.Release(model, integrator.workspace(), check.released_energy);
+      }
+    }
     if (++accepted_in_a_row >= kStepsBeforeGrowth && step < nominal) {
       step = std::min(2.0 * step, nominal);
       accepted_in_a_row = 0;

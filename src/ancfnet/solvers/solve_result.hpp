@@ -5,6 +5,7 @@
 #include <string>
 
 #include "ancfnet/analysis/energy.hpp"
+#include "ancfnet/analysis/failure.hpp"
 #include "ancfnet/state/state.hpp"
 
 namespace ancfnet {
@@ -20,6 +21,7 @@ struct SolveResult {
   SolveStatistics statistics;
   bool completed = true;
   std::string message;  ///< why the analysis stopped early
+  std::vector<FailureEvent> failures;  ///< threads and connections that broke, in time order
 };
 
 /// Called with the state at t = 0 (load factor 0) and at every output step. It may throw

@@ -9,6 +9,7 @@ State MakeInitialState(const Model& model) {
   state.q = model.initial_positions();
   state.v = model.initial_velocities();
   state.a = VectorXd::Zero(model.num_dofs());
+  state.link_broken.assign(model.links().size(), 0);
   return state;
 }
 

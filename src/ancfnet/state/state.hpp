@@ -2,6 +2,8 @@
 /// @file State: time and the global coordinate vectors. Plain data; every computation takes
 /// (const Model&, const State&, Workspace&).
 
+#include <vector>
+
 #include "ancfnet/common/types.hpp"
 
 namespace ancfnet {
@@ -15,6 +17,9 @@ struct State {
   VectorXd q;
   VectorXd v;
   VectorXd a;
+  /// Per spring-damper link of the model: 1 once it has failed (its tension passed its
+  /// breaking force, or that of the cable it holds); it then carries no force.
+  std::vector<char> link_broken;
 };
 
 /// The model's initial state at t = 0 (accelerations zero until an integrator computes them).

@@ -12,6 +12,7 @@ Workspace::Workspace(const Model& model)
       element_viscous_force(model.elements().size()),
       element_stiffness(model.elements().size()),
       element_damping(model.elements().size()),
+      link_broken(model.links().size(), 0),
       internal_force(VectorXd::Zero(model.num_dofs())),
       viscous_force(VectorXd::Zero(model.num_dofs())),
       applied_force(VectorXd::Zero(model.num_dofs())),

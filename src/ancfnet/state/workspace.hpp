@@ -24,6 +24,10 @@ struct Workspace {
   std::vector<Matrix12d> element_stiffness;
   std::vector<Matrix12d> element_damping;
 
+  // Copied from State::link_broken by the integrators before they evaluate forces; the force,
+  // Jacobian and energy of a broken link are skipped.
+  std::vector<char> link_broken;
+
   // Global coordinate vectors (all coordinates, fixed included).
   VectorXd internal_force;  ///< Q_int(q, v): CalcInternalForces
   VectorXd viscous_force;   ///< its Kelvin–Voigt part: CalcInternalForces

@@ -267,3 +267,40 @@ TEST(AncfCable, DistributedForceIntegratesShapeFunctions) {
 
 }  // namespace
 }  // namespace ancfnet
+
+namespace ancfnet {
+namespace {
+
+// The axial force of each law is the derivative of its strain energy density: for a straight
+// element stretched by λ, ε = (λ² − 1)/2 and U = L ψ(ε), so dU/dλ = L N(ε) λ / EA · EA.
+TEST(AncfCable, AxialForceIsTheDerivativeOfTheEnergyForEveryLaw) {
+  for (int law = 0; law < 3; ++law) {
+    CableElementParameters p = MakeParameters();
+    p.bending_stiffness = 0.0;
+    p.tension_only = law > 0;
+    p.rope_smoothing_strain = law == 2 ? 1e-3 : 0.0;
+    for (double stretch : {0.97, 0.9995, 1.0004, 1.02}) {
+      const Vector3d dir = Vector3d(1, 2, -0.5).normalized();
+      const auto energy = [&](double l) {
+        return CalcCableStrainEnergy(p, StraightElement(Vector3d::Zero(), dir, p.length, l));
+      };
+      const double h = 1e-7;
+      const double du_dlambda = (energy(stretch + h) - energy(stretch - h)) / (2 * h);
+      const double strain = 0.5 * (stretch * stretch - 1.0);
+      const double force = CalcCableAxialForce(p, strain);
+      EXPECT_NEAR(force * stretch * p.length, du_dlambda, 1e-6 * p.axial_stiffness * p.length)
+          << "law " << law << ", stretch " << stretch;
+      // Uniform strain: every Gauss point has it.
+      EXPECT_NEAR(CalcCableMaxTension(
+                      p, StraightElement(Vector3d::Zero(), dir, p.length, stretch)),
+                  force, 1e-9 * p.axial_stiffness);
+    }
+  }
+  CableElementParameters rope = MakeParameters();
+  rope.tension_only = true;
+  EXPECT_EQ(CalcCableAxialForce(rope, -0.01), 0.0);  // never pushes
+  EXPECT_DOUBLE_EQ(CalcCableAxialForce(rope, 0.01), 0.01 * rope.axial_stiffness);
+}
+
+}  // namespace
+}  // namespace ancfnet

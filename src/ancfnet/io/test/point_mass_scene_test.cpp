@@ -142,3 +142,53 @@ TEST(PointMassScene, BadInputNamesFileLineAndKey) {
 
 }  // namespace
 }  // namespace ancfnet
+
+namespace ancfnet {
+namespace {
+
+TEST(PointMassScene, ReadsBreakingForcesAndLinkProbes) {
+  std::string text = Replace(kTwoMasses, "natural_length: 0.5,", "natural_length: 0.5, breaking_force: 3.5,");
+  text = Replace(text, "  - {name: p2, quantity: position, at: m2}",
+                 "  - {name: p2, quantity: position, at: m2}\n"
+                 "  - {name: pull, quantity: link_force, link: link}");
+  const Scene scene = ParseScene(text);
+  EXPECT_DOUBLE_EQ(scene.model.links()[0].breaking_force, 3.5);
+  ASSERT_EQ(scene.probes.size(), 2u);
+  EXPECT_EQ(scene.probes[1].quantity, ProbeQuantity::kLinkForce);
+  EXPECT_EQ(scene.probes[1].link, 0);
+  EXPECT_EQ(ProbeColumns(scene.probes[1]),
+            (std::vector<std::string>{"pull.tension", "pull.fx", "pull.fy", "pull.fz"}));
+  // 10 mm stretched, 200 N/m: T = 2 N pulling the second mass back towards the first.
+  State state = MakeInitialState(scene.model);
+  state.v.setZero();
+  std::vector<double> values;
+  EvaluateProbe(scene.probes[1], scene.model, state, {}, &values);
+  EXPECT_NEAR(values[0], 2.0, 1e-12);
+  EXPECT_NEAR(values[1], -2.0, 1e-12);
+  state.link_broken[0] = 1;  // a broken link carries nothing
+  values.clear();
+  EvaluateProbe(scene.probes[1], scene.model, state, {}, &values);
+  EXPECT_EQ(values, (std::vector<double>{0.0, 0.0, 0.0, 0.0}));
+}
+
+TEST(PointMassScene, RefusesBadBreakingForcesAndUnknownLinks) {
+  const auto message = [](const std::string& text) {
+    try {
+      ParseScene(text);
+    } catch (const InputError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message(Replace(kTwoMasses, "natural_length: 0.5,", "natural_length: 0.5, breaking_force: -1,"))
+                .find("breaking_force"),
+            std::string::npos);
+  const std::string probe = Replace(kTwoMasses, "  - {name: p2, quantity: position, at: m2}",
+                                    "  - {name: pull, quantity: link_force, link: lnk}");
+  EXPECT_NE(message(probe).find("no spring-damper named 'lnk'; did you mean 'link'?"),
+            std::string::npos)
+      << message(probe);
+}
+
+}  // namespace
+}  // namespace ancfnet

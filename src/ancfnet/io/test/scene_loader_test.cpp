@@ -331,7 +331,7 @@ const BadScene kBadScenes[] = {
     {"UnknownKeyListsAllowed", Cantilever("    section: bar\n", "    section: bar\n    foo: 1\n"),
      "scene.yaml:13:5: unknown key 'foo' in 'cables[0]'; allowed keys: name, start, end, elements, "
      "material, section, tension_only, rope_smoothing_strain, bending, axial_gauss_points, "
-     "bending_gauss_points, initial_velocity"},
+     "bending_gauss_points, initial_velocity, breaking_force"},
     {"DuplicateKey", Cantilever("    elements: 16\n", "    elements: 16\n    elements: 8\n"),
      "scene.yaml:11:5: duplicate key 'elements' (first given at line 10)"},
     {"MissingRequiredKey", Cantilever(", density: 7800", ""),

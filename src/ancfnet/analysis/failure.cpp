@@ -1,0 +1,65 @@
+#include "ancfnet/analysis/failure.hpp"
+
+#include <cmath>
+
+#include "ancfnet/assembly/link_forces.hpp"
+#include "ancfnet/elements/ancf_cable.hpp"
+
+namespace ancfnet {
+namespace {
+
+// Largest elastic axial force along a cable (N).
+double CalcCableTension(const Model& model, const Cable& cable, const VectorXd& q) {
+  double tension = -std::numeric_limits<double>::infinity();
+  for (Index e = cable.first_element; e < cable.first_element + cable.num_elements; ++e) {
+    const CableElement& element = model.elements()[e];
+    tension = std::max(tension, CalcCableMaxTension(element.parameters, model.Gather(element, q)));
+  }
+  return tension;
+}
+
+// Breaks link l: marks it and adds the energy it held.
+void BreakLink(const Model& model, Index l, State* state, FailureCheck* check) {
+  state->link_broken[l] = 1;
+  ++check->broken_links;
+  check->released_energy += CalcLinkEnergy(model.links()[l], state->q);
+}
+
+}  // namespace
+
+bool CanFail(const Model& model) {
+  for (const SpringDamperLink& link : model.links())
+    if (std::isfinite(link.breaking_force)) return true;
+  for (const Cable& cable : model.cables())
+    if (std::isfinite(cable.breaking_force)) return true;
+  return false;
+}
+
+FailureCheck ApplyFailures(const Model& model, State* state, std::vector<FailureEvent>* events) {
+  FailureCheck check;
+  const auto& links = model.links();
+  for (std::size_t l = 0; l < links.size(); ++l) {
+    const SpringDamperLink& link = links[l];
+    if (state->link_broken[l] || !std::isfinite(link.breaking_force)) continue;
+    const double tension = CalcLinkState(link, state->q, state->v).tension;
+    if (tension < link.breaking_force) continue;
+    BreakLink(model, static_cast<Index>(l), state, &check);
+    events->push_back({state->t, link.name, tension});
+  }
+  const auto& cables = model.cables();
+  for (std::size_t c = 0; c < cables.size(); ++c) {
+    if (!std::isfinite(cables[c].breaking_force)) continue;
+    const double tension = CalcCableTension(model, cables[c], state->q);
+    if (tension < cables[c].breaking_force) continue;
+    const int before = check.broken_links;
+    for (std::size_t l = 0; l < links.size(); ++l) {
+      const bool holds = links[l].first_cable == static_cast<Index>(c) ||
+                         links[l].second_cable == static_cast<Index>(c);
+      if (holds && !state->link_broken[l]) BreakLink(model, static_cast<Index>(l), state, &check);
+    }
+    if (check.broken_links > before) events->push_back({state->t, cables[c].name, tension});
+  }
+  return check;
+}
+
+}  // namespace ancfnet
