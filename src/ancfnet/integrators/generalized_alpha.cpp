@@ -56,6 +56,7 @@ class GeneralizedAlphaIntegrator::StepProblem {
                     h_ * h_ * ((0.5 - c.beta) * a_bar[i] + c.beta * a_bar_next);
       state_.v[i] = prev.v[i] + h_ * ((1.0 - c.gamma) * a_bar[i] + c.gamma * a_bar_next);
     }
+    owner_.dofs_.AdvanceMoving(prev.q, prev.v, h_, &state_.q);
   }
 
   void CalcResidual(VectorXd* r) {

@@ -27,6 +27,7 @@ class ImplicitMidpointIntegrator::StepProblem {
       mid.v[i] = prev.v[i] + 0.5 * h_ * state_.a[i];
       mid.q[i] = prev.q[i] + 0.5 * h_ * prev.v[i] + 0.25 * h_ * h_ * state_.a[i];
     }
+    owner_.dofs_.AdvanceMoving(prev.q, prev.v, 0.5 * h_, &mid.q);
   }
 
   void CalcResidual(VectorXd* r) {
@@ -113,6 +114,7 @@ StepOutcome ImplicitMidpointIntegrator::Step(double h, State* state) {
     state->q[i] = 2.0 * midpoint_.q[i] - previous_.q[i];
     state->v[i] = 2.0 * midpoint_.v[i] - previous_.v[i];
   }
+  dofs_.AdvanceMoving(previous_.q, previous_.v, h, &state->q);
   // Forces at the converged midpoint, for the energy account.
   CalcInternalForces(model_, midpoint_.q, midpoint_.v, ws_);
   CalcExternalForces(model_, midpoint_.q, 1.0, ws_);

@@ -9,10 +9,6 @@
 namespace ancfnet {
 namespace {
 
-// Threads of nets go slack and taut all the time: smooth their rope law over a strain of 1e-4
-// (an error of at most EA·5e-5 in the axial force), which removes the Newton failures there.
-constexpr double kDefaultNetRopeSmoothing = 1e-4;
-
 // A number for both directions, or a pair [u, v].
 template <typename Read>
 auto ReadPair(const YamlValue& value, Read read) {
@@ -92,6 +88,44 @@ void ReadBullets(const YamlValue& value, NetSpec* spec) {
   }
 }
 
+// material, section (required), tension_only, rope_smoothing_strain, bending: the net defaults.
+CableProperties ReadThreadProperties(const YamlMap& map, const Library& library) {
+  const Material& material = Lookup(library.materials, map.Get("material"), "material",
+                                    "known materials");
+  const Section& section = Lookup(library.sections, map.Get("section"), "section",
+                                  "known sections");
+  CableProperties p = MakeThreadProperties(material, section);
+  if (auto v = map.Find("tension_only")) p.tension_only = v->AsBool();
+  if (auto v = map.Find("rope_smoothing_strain")) p.rope_smoothing_strain = v->AsNumberIn(0.0, 0.1);
+  if (auto v = map.Find("bending")) p.bending_model = ReadBendingModel(*v);
+  return p;
+}
+
+// tether: {chaser, velocity, attach: center | bridle, material, section, elements, natural_length,
+// bridle_length, bridle_elements, tension_only, rope_smoothing_strain, bending}.
+TetherSpec ReadTether(const YamlValue& value, const Library& library) {
+  const YamlMap map = value.AsMap();
+  map.CheckKeys({"chaser", "velocity", "attach", "material", "section", "elements",
+                 "natural_length", "bridle_length", "bridle_elements", "tension_only",
+                 "rope_smoothing_strain", "bending"});
+  TetherSpec tether;
+  tether.chaser = map.Get("chaser").AsVector3();
+  if (auto v = map.Find("velocity")) tether.chaser_velocity = v->AsVector3();
+  if (auto v = map.Find("attach"))
+    tether.attachment = v->AsEnum<TetherAttachment>(
+        {{"center", TetherAttachment::kCenter}, {"bridle", TetherAttachment::kBridle}});
+  tether.properties = ReadThreadProperties(map, library);
+  if (auto v = map.Find("elements")) tether.elements = v->AsInt(1, 1000);
+  if (auto v = map.Find("natural_length")) tether.natural_length = v->AsPositive();
+  if (tether.attachment == TetherAttachment::kBridle) {
+    tether.bridle_length = map.Get("bridle_length").AsPositive();
+    if (auto v = map.Find("bridle_elements")) tether.bridle_elements = v->AsInt(1, 1000);
+  } else if (auto v = map.Find("bridle_length")) {
+    v->Fail("bridle_length needs attach: bridle");
+  }
+  return tether;
+}
+
 }  // namespace
 
 void ReadNet(const YamlValue& item, const Library& library, ModelBuilder* builder,
@@ -102,7 +136,7 @@ void ReadNet(const YamlValue& item, const Library& library, ModelBuilder* builde
       "name", "type", "material", "section", "elements_per_thread", "tension_only",
       "rope_smoothing_strain", "bending",
       "natural_length_ratio", "knot_model", "knot_mass", "knot_link", "velocity",
-      "packing_ratio", "bullets", "thread_breaking_force", "link_breaking_force"};
+      "packing_ratio", "bullets", "thread_breaking_force", "link_breaking_force", "tether"};
   if (type == 2) keys.insert(keys.end(), {"knot_positions", "threads", "perimeter", "axis"});
   else keys.insert(keys.end(), {"side", "meshes", "mesh_size", "center", "axis_u", "axis_v"});
   map.CheckKeys(keys);
@@ -117,17 +151,7 @@ void ReadNet(const YamlValue& item, const Library& library, ModelBuilder* builde
     const Vector3d v = map.Find("axis_v") ? map.Get("axis_v").AsVector3() : Vector3d::UnitY();
     spec.axis = u.cross(v);
   }
-  const Material& material = Lookup(library.materials, map.Get("material"), "material",
-                                    "known materials");
-  const Section& section = Lookup(library.sections, map.Get("section"), "section",
-                                  "known sections");
-  spec.thread = MakeCableProperties(material, section);
-  spec.thread.tension_only = map.Find("tension_only") ? map.Get("tension_only").AsBool() : true;
-  spec.thread.rope_smoothing_strain = kDefaultNetRopeSmoothing;
-  if (auto v = map.Find("rope_smoothing_strain"))
-    spec.thread.rope_smoothing_strain = v->AsNumberIn(0.0, 0.1);
-  spec.thread.bending_model = BendingModel::kSecondDerivative;
-  if (auto v = map.Find("bending")) spec.thread.bending_model = ReadBendingModel(*v);
+  spec.thread = ReadThreadProperties(map, library);
   if (auto v = map.Find("elements_per_thread")) spec.elements_per_thread = v->AsInt(1, 1000);
   if (auto v = map.Find("natural_length_ratio")) spec.natural_length_ratio = v->AsPositive();
   if (auto v = map.Find("knot_model"))
@@ -140,6 +164,7 @@ void ReadNet(const YamlValue& item, const Library& library, ModelBuilder* builde
   if (auto v = map.Find("bullets")) ReadBullets(*v, &spec);
   if (auto v = map.Find("thread_breaking_force")) spec.thread_breaking_force = v->AsPositive();
   if (auto v = map.Find("link_breaking_force")) spec.link_breaking_force = v->AsPositive();
+  if (auto v = map.Find("tether")) spec.tether = ReadTether(*v, library);
   item.Locate([&] { AddNet(*builder, spec); });
   for (std::size_t k = 0; k < spec.topology.knots.size(); ++k)
     point_masses->push_back(KnotName(spec.name, static_cast<Index>(k)));

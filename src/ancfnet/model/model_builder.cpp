@@ -185,6 +185,12 @@ void ModelBuilder::FixPointMass(const std::string& name) {
   for (int k = 0; k < 3; ++k) model_.fixed_[model_.point_masses_[mass].dof + k] = true;
 }
 
+void ModelBuilder::MovePointMass(const std::string& name, const Vector3d& velocity) {
+  RequireFinite(velocity, "velocity of a moving point mass");
+  FixPointMass(name);
+  moving_.emplace_back(model_.point_masses_[model_.FindPointMass(name)].dof, velocity);
+}
+
 void ModelBuilder::AddSpringDamper(const std::string& name, const CablePointRef& first,
                                    const CablePointRef& second, const ConnectionLaw& law,
                                    std::optional<double> natural_length,
@@ -270,9 +276,10 @@ Model ModelBuilder::Build() const {
   if (model_.cables_.empty() && model_.point_masses_.empty())
     throw InputError("the model has no cable and no point mass");
   Model model = model_;
-  // A fixed coordinate cannot move: its initial velocity is zero.
+  // A fixed coordinate does not move, unless it belongs to a moving point mass.
   for (Index i = 0; i < model.num_dofs(); ++i)
     if (model.fixed_[i]) model.initial_velocities_[i] = 0.0;
+  for (const auto& [dof, velocity] : moving_) model.initial_velocities_.segment<3>(dof) = velocity;
   return model;
 }
 

@@ -6,6 +6,8 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "ancfnet/model/model.hpp"
 
@@ -59,6 +61,10 @@ class ModelBuilder {
   void SetPointMassVelocity(const std::string& name, const Vector3d& velocity);
   /// Fixes the position of a point mass.
   void FixPointMass(const std::string& name);
+  /// Moves a point mass at a constant velocity (m/s): its position is prescribed,
+  /// r(t) = r₀ + v t (a chaser, a moving anchor). The work its reaction does is not in the energy
+  /// account's W.
+  void MovePointMass(const std::string& name, const Vector3d& velocity);
   /// Adds a spring-damper between two points, each a point mass (named by `cable`, s ignored) or
   /// a cable point. Its natural length defaults to the initial distance of the points. It fails
   /// (is removed) once its tension reaches `breaking_force` (N, > 0; infinite: never).
@@ -95,6 +101,7 @@ class ModelBuilder {
   // Position coordinates of a cable end: the named knot's, or new ones at `position`.
   Index EndPositionDof(const std::string& knot, const Vector3d& position, const char* which);
   Model model_;
+  std::vector<std::pair<Index, Vector3d>> moving_;  // first coordinate, velocity
 };
 
 }  // namespace ancfnet

@@ -45,6 +45,14 @@ void Validate(const NetSpec& spec) {
 
 }  // namespace
 
+CableProperties MakeThreadProperties(const Material& material, const Section& section) {
+  CableProperties p = MakeCableProperties(material, section);
+  p.tension_only = true;
+  p.rope_smoothing_strain = 1e-4;
+  p.bending_model = BendingModel::kSecondDerivative;
+  return p;
+}
+
 std::string KnotName(const std::string& net, Index knot) { return fmt::format("{}.k{}", net, knot); }
 
 std::string ThreadName(const std::string& net, Index thread) {
@@ -100,6 +108,7 @@ void AddNet(ModelBuilder& builder, const NetSpec& spec) {
                               spec.link_law, 0.0, spec.link_breaking_force);
     }
   }
+  if (spec.tether) AddNetTether(builder, spec, start, *spec.tether);
   // The threads' velocities above also set the shared knot coordinates of ideal knots.
   for (Index i = 0; i < num_knots; ++i)
     builder.SetPointMassVelocity(KnotName(spec.name, i), velocity[i]);

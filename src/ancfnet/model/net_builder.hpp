@@ -5,11 +5,13 @@
 /// the model of the seed paper), corner masses ("bullets") and a packed initial state.
 
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "ancfnet/forces/connection_law.hpp"
 #include "ancfnet/model/model_builder.hpp"
+#include "ancfnet/model/net_tether.hpp"
 #include "ancfnet/model/net_topology.hpp"
 
 namespace ancfnet {
@@ -47,10 +49,18 @@ struct NetSpec {
   double thread_breaking_force = std::numeric_limits<double>::infinity();
   /// Tension (N) at which a knot link fails; compliant knots only.
   double link_breaking_force = std::numeric_limits<double>::infinity();
+  std::optional<TetherSpec> tether;  ///< a tether from a chaser point (model/net_tether.hpp)
 };
 
+/// Properties of a net thread or tether of this material and section with the defaults of nets:
+/// the rope law (tension only), smoothed over a strain of 1e-4 (an error of at most EA·5e-5 in the
+/// axial force; it removes the Newton failures of threads going slack and taut), and the simple
+/// bending model ½ EI ∫|r''|², regular where a slack rope's |r'| shrinks.
+CableProperties MakeThreadProperties(const Material& material, const Section& section);
+
 /// Adds the net to `builder`: point masses "NAME.k<i>" for the knots, cables "NAME.t<j>" for the
-/// threads, links "NAME.t<j>.start" / ".end" for compliant knots, and the net description.
+/// threads, links "NAME.t<j>.start" / ".end" for compliant knots, the tether when asked
+/// (AddNetTether), and the net description.
 /// Throws InputError for invalid values (a thread of a compliant net needs a law, knot masses
 /// must be > 0 there, ratios must be positive).
 void AddNet(ModelBuilder& builder, const NetSpec& spec);

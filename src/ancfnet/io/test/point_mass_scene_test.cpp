@@ -192,3 +192,57 @@ TEST(PointMassScene, RefusesBadBreakingForcesAndUnknownLinks) {
 
 }  // namespace
 }  // namespace ancfnet
+
+namespace ancfnet {
+namespace {
+
+constexpr const char* kTetheredNet = R"(gravity: [0, 0, 0]
+materials:
+  dyneema: {youngs_modulus: 1.0e11, density: 970}
+sections:
+  thread: {shape: circle, diameter: 0.001}
+  rope: {shape: circle, diameter: 0.003}
+nets:
+  - {name: net, type: square, side: 2.0, meshes: 2, material: dyneema, section: thread,
+     knot_model: compliant, knot_mass: 0.001, knot_link: {type: linear, stiffness: 1.0e4},
+     thread_breaking_force: 80, link_breaking_force: 120,
+     tether: {chaser: [0, 0, -3], velocity: [0, 0, 0.5], attach: bridle, bridle_length: 2.0,
+              material: dyneema, section: rope, elements: 6, natural_length: 2.0}}
+probes:
+  - {name: pull, quantity: max_tension, net: net}
+  - {name: grip, quantity: link_force, link: net.bridle2.end}
+)";
+
+TEST(NetScene, ReadsTetherFailureAndTensionProbes) {
+  const Scene scene = ParseScene(kTetheredNet);
+  const Model& model = scene.model;
+  const Cable& tether = model.cables()[model.FindCable("net.tether")];
+  EXPECT_EQ(tether.num_elements, 6);
+  EXPECT_DOUBLE_EQ(tether.length, 2.0);
+  EXPECT_TRUE(tether.properties.tension_only);  // the net's rope defaults
+  EXPECT_DOUBLE_EQ(tether.properties.rope_smoothing_strain, 1e-4);
+  const Index chaser = model.point_masses()[model.FindPointMass("net.chaser")].dof;
+  EXPECT_DOUBLE_EQ(model.initial_velocities()[chaser + 2], 0.5);
+  EXPECT_TRUE(model.fixed()[chaser]);
+  EXPECT_DOUBLE_EQ(model.cables()[model.FindCable("net.t0")].breaking_force, 80.0);
+  EXPECT_DOUBLE_EQ(model.links()[0].breaking_force, 120.0);
+  ASSERT_EQ(scene.probes.size(), 2u);
+  EXPECT_EQ(scene.probes[0].quantity, ProbeQuantity::kMaxTension);
+  EXPECT_EQ(model.links()[scene.probes[1].link].name, "net.bridle2.end");
+}
+
+TEST(NetScene, RefusesABridleLengthWithoutABridle) {
+  std::string text = kTetheredNet;
+  text.replace(text.find("attach: bridle, "), 16, "");
+  try {
+    ParseScene(text, "net.yaml");
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("net.yaml:11:"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("bridle_length needs attach: bridle"), std::string::npos)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace ancfnet
