@@ -28,8 +28,9 @@ UNITS = {
     "x": "m", "y": "m", "z": "m",
     "vx": "m/s", "vy": "m/s", "vz": "m/s",
     "kinetic": "J", "strain": "J", "gravity": "J", "work": "J", "dissipated": "J",
+    "area": "m²", "distance": "m", "tension": "N", "fx": "N", "fy": "N", "fz": "N", "thread": "index",
 }
-QUANTITIES = {"m": "position", "m/s": "velocity", "J": "energy"}
+QUANTITIES = {"m": "position", "m/s": "velocity", "J": "energy", "m²": "area", "N": "force"}
 ENERGY_TERMS = ("kinetic", "strain", "gravity", "work", "dissipated")
 
 
