@@ -41,14 +41,57 @@ NetTopology ReadGridTopology(const YamlMap& map, bool diamond) {
   return map.Get("side").Locate([&] { return MakeGridNet(grid); });
 }
 
-NetTopology ReadGraphTopology(const YamlMap& map) {
+// The material of `map`, or else of `fallback` (a thread falls back on its net).
+const Material& ReadMaterial(const YamlMap& map, const YamlMap& fallback, const Library& library) {
+  const YamlValue value = map.Find("material") ? map.Get("material") : fallback.Get("material");
+  return Lookup(library.materials, value, "material", "known materials");
+}
+
+const Section& ReadSection(const YamlMap& map, const YamlMap& fallback, const Library& library) {
+  const YamlValue value = map.Find("section") ? map.Get("section") : fallback.Get("section");
+  return Lookup(library.sections, value, "section", "known sections");
+}
+
+// Thread properties of this material and section with the rope settings of `settings`
+// (tension_only, rope_smoothing_strain, bending), else the net defaults.
+CableProperties ReadThreadProperties(const YamlMap& settings, const Material& material,
+                                     const Section& section) {
+  CableProperties p = MakeThreadProperties(material, section);
+  if (auto v = settings.Find("tension_only")) p.tension_only = v->AsBool();
+  if (auto v = settings.Find("rope_smoothing_strain"))
+    p.rope_smoothing_strain = v->AsNumberIn(0.0, 0.1);
+  if (auto v = settings.Find("bending")) p.bending_model = ReadBendingModel(*v);
+  return p;
+}
+
+// A thread of a graph net: [i, j], or {knots: [i, j], material, section, elements,
+// natural_length} with its own values (material and section default to the net's).
+std::array<Index, 2> ReadGraphThread(const YamlValue& thread, const YamlMap& net,
+                                     const Library& library, ThreadDesign* design) {
+  YamlValue knots = thread;
+  if (thread.IsMap()) {
+    const YamlMap map = thread.AsMap();
+    map.CheckKeys({"knots", "material", "section", "elements", "natural_length"});
+    knots = map.Get("knots");
+    if (map.Find("material") || map.Find("section"))
+      design->properties = ReadThreadProperties(net, ReadMaterial(map, net, library),
+                                                ReadSection(map, net, library));
+    if (auto v = map.Find("elements")) design->elements = v->AsInt(1, 1000);
+    if (auto v = map.Find("natural_length")) design->natural_length = v->AsPositive();
+  }
+  const std::vector<YamlValue> ends = knots.AsList();
+  if (ends.size() != 2) knots.FailExpected("a thread [knot, knot]");
+  return {ends[0].AsInt(0), ends[1].AsInt(0)};
+}
+
+NetTopology ReadGraphTopology(const YamlMap& map, const Library& library,
+                              std::vector<ThreadDesign>* designs) {
   std::vector<Vector3d> knots;
   for (const YamlValue& knot : map.Get("knot_positions").AsList(true)) knots.push_back(knot.AsVector3());
   std::vector<std::array<Index, 2>> threads;
   for (const YamlValue& thread : map.Get("threads").AsList(true)) {
-    const std::vector<YamlValue> ends = thread.AsList();
-    if (ends.size() != 2) thread.FailExpected("a thread [knot, knot]");
-    threads.push_back({ends[0].AsInt(0), ends[1].AsInt(0)});
+    designs->emplace_back();
+    threads.push_back(ReadGraphThread(thread, map, library, &designs->back()));
   }
   std::vector<Index> perimeter;
   if (auto v = map.Find("perimeter"))
@@ -88,19 +131,6 @@ void ReadBullets(const YamlValue& value, NetSpec* spec) {
   }
 }
 
-// material, section (required), tension_only, rope_smoothing_strain, bending: the net defaults.
-CableProperties ReadThreadProperties(const YamlMap& map, const Library& library) {
-  const Material& material = Lookup(library.materials, map.Get("material"), "material",
-                                    "known materials");
-  const Section& section = Lookup(library.sections, map.Get("section"), "section",
-                                  "known sections");
-  CableProperties p = MakeThreadProperties(material, section);
-  if (auto v = map.Find("tension_only")) p.tension_only = v->AsBool();
-  if (auto v = map.Find("rope_smoothing_strain")) p.rope_smoothing_strain = v->AsNumberIn(0.0, 0.1);
-  if (auto v = map.Find("bending")) p.bending_model = ReadBendingModel(*v);
-  return p;
-}
-
 // tether: {chaser, velocity, attach: center | bridle, material, section, elements, natural_length,
 // bridle_length, bridle_elements, tension_only, rope_smoothing_strain, bending}.
 TetherSpec ReadTether(const YamlValue& value, const Library& library) {
@@ -114,7 +144,8 @@ TetherSpec ReadTether(const YamlValue& value, const Library& library) {
   if (auto v = map.Find("attach"))
     tether.attachment = v->AsEnum<TetherAttachment>(
         {{"center", TetherAttachment::kCenter}, {"bridle", TetherAttachment::kBridle}});
-  tether.properties = ReadThreadProperties(map, library);
+  tether.properties =
+      ReadThreadProperties(map, ReadMaterial(map, map, library), ReadSection(map, map, library));
   if (auto v = map.Find("elements")) tether.elements = v->AsInt(1, 1000);
   if (auto v = map.Find("natural_length")) tether.natural_length = v->AsPositive();
   if (tether.attachment == TetherAttachment::kBridle) {
@@ -143,7 +174,8 @@ void ReadNet(const YamlValue& item, const Library& library, ModelBuilder* builde
 
   NetSpec spec;
   spec.name = map.Get("name").AsString();
-  spec.topology = type == 2 ? ReadGraphTopology(map) : ReadGridTopology(map, type == 1);
+  spec.topology = type == 2 ? ReadGraphTopology(map, library, &spec.thread_designs)
+                            : ReadGridTopology(map, type == 1);
   if (type == 2) {
     if (auto v = map.Find("axis")) spec.axis = v->AsVector3();
   } else {
@@ -151,7 +183,8 @@ void ReadNet(const YamlValue& item, const Library& library, ModelBuilder* builde
     const Vector3d v = map.Find("axis_v") ? map.Get("axis_v").AsVector3() : Vector3d::UnitY();
     spec.axis = u.cross(v);
   }
-  spec.thread = ReadThreadProperties(map, library);
+  spec.thread =
+      ReadThreadProperties(map, ReadMaterial(map, map, library), ReadSection(map, map, library));
   if (auto v = map.Find("elements_per_thread")) spec.elements_per_thread = v->AsInt(1, 1000);
   if (auto v = map.Find("natural_length_ratio")) spec.natural_length_ratio = v->AsPositive();
   if (auto v = map.Find("knot_model"))

@@ -36,6 +36,16 @@ void Validate(const NetSpec& spec) {
     throw InputError(
         "threads and links can only fail with compliant knots: with ideal knots the threads share "
         "the knots' coordinates and could never come off");
+  if (!spec.thread_designs.empty() && spec.thread_designs.size() != spec.topology.threads.size())
+    throw InputError(fmt::format("net '{}' has {} threads but {} thread designs", spec.name,
+                                 spec.topology.threads.size(), spec.thread_designs.size()));
+  for (const ThreadDesign& design : spec.thread_designs) {
+    if (design.elements && *design.elements < 1)
+      throw InputError(fmt::format("a thread needs at least 1 element (got {})", *design.elements));
+    if (design.natural_length && !(*design.natural_length > 0.0 && std::isfinite(*design.natural_length)))
+      throw InputError(fmt::format("a thread's natural length must be > 0 (got {})",
+                                   *design.natural_length));
+  }
   for (const KnotMass& extra : spec.knot_masses) {
     if (extra.knot < 0 || extra.knot >= static_cast<Index>(spec.topology.knots.size()))
       throw InputError(fmt::format("no knot {} in net '{}'", extra.knot, spec.name));
@@ -85,13 +95,14 @@ void AddNet(ModelBuilder& builder, const NetSpec& spec) {
   for (std::size_t j = 0; j < topology.threads.size(); ++j) {
     const auto [a, b] = topology.threads[j];
     const std::string name = ThreadName(spec.name, static_cast<Index>(j));
+    const ThreadDesign design = spec.thread_designs.empty() ? ThreadDesign{} : spec.thread_designs[j];
     CableSpec cable{.name = name,
                     .start = start[a],
                     .end = start[b],
-                    .num_elements = spec.elements_per_thread,
-                    .properties = spec.thread,
-                    .natural_length = spec.natural_length_ratio *
-                                      (topology.knots[b] - topology.knots[a]).norm(),
+                    .num_elements = design.elements.value_or(spec.elements_per_thread),
+                    .properties = design.properties.value_or(spec.thread),
+                    .natural_length = design.natural_length.value_or(
+                        spec.natural_length_ratio * (topology.knots[b] - topology.knots[a]).norm()),
                     .breaking_force = spec.thread_breaking_force};
     if (ideal) {
       cable.start_knot = KnotName(spec.name, a);

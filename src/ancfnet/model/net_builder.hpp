@@ -28,11 +28,21 @@ struct KnotMass {
   Vector3d velocity = Vector3d::Zero();  ///< m/s
 };
 
+/// What one thread of a net may set for itself; unset values take the net's.
+struct ThreadDesign {
+  std::optional<CableProperties> properties;  ///< material and section (and the rope settings)
+  std::optional<int> elements;                ///< ANCF elements, ≥ 1
+  std::optional<double> natural_length;       ///< m, > 0
+};
+
 struct NetSpec {
   std::string name;
   NetTopology topology;
   CableProperties thread;  ///< the same for every thread (ropes: tension_only)
   int elements_per_thread = 1;
+  /// Per thread of the topology (empty, or one entry per thread): its own properties, elements
+  /// or natural length.
+  std::vector<ThreadDesign> thread_designs;
   /// Natural length of each thread over the distance of its knots in the unpacked design: > 1
   /// starts slack, < 1 pre-tensioned.
   double natural_length_ratio = 1.0;

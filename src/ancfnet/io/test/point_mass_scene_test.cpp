@@ -246,3 +246,40 @@ TEST(NetScene, RefusesABridleLengthWithoutABridle) {
 
 }  // namespace
 }  // namespace ancfnet
+
+namespace ancfnet {
+namespace {
+
+TEST(NetScene, GraphThreadsMayHaveTheirOwnSectionElementsAndLength) {
+  const Scene scene = ParseScene(R"(gravity: [0, 0, 0]
+materials:
+  dyneema: {youngs_modulus: 1.0e11, density: 970}
+  nylon: {youngs_modulus: 3.0e9, density: 1140}
+sections:
+  thread: {shape: circle, diameter: 0.001}
+  rope: {shape: circle, diameter: 0.004}
+nets:
+  - name: kite
+    type: graph
+    material: dyneema
+    section: thread
+    knot_positions: [[0, 0, 0], [1, 0, 0], [1, 1, 0]]
+    threads: [[0, 1], {knots: [1, 2], section: rope, elements: 3},
+              {knots: [2, 0], material: nylon, natural_length: 1.5}]
+)");
+  const Model& model = scene.model;
+  const auto& cables = model.cables();
+  const Cable& plain = cables[model.FindCable("kite.t0")];
+  const Cable& thick = cables[model.FindCable("kite.t1")];
+  const Cable& soft = cables[model.FindCable("kite.t2")];
+  EXPECT_EQ(plain.num_elements, 1);
+  EXPECT_DOUBLE_EQ(plain.length, 1.0);
+  EXPECT_EQ(thick.num_elements, 3);
+  EXPECT_NEAR(thick.properties.axial_stiffness / plain.properties.axial_stiffness, 16.0, 1e-12);
+  EXPECT_TRUE(thick.properties.tension_only);  // the net's rope settings stay
+  EXPECT_DOUBLE_EQ(soft.length, 1.5);           // slack: √2 m apart
+  EXPECT_NEAR(soft.properties.axial_stiffness / plain.properties.axial_stiffness, 0.03, 1e-12);
+}
+
+}  // namespace
+}  // namespace ancfnet
