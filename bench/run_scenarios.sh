@@ -5,7 +5,9 @@
 # every run, /usr/bin/time -v logs, Google Benchmark JSON) go to RESULTS_DIR.
 #
 # Usage: bench/run_scenarios.sh BUILD_DIR [RESULTS_DIR]   (default RESULTS_DIR: BUILD_DIR/bench-results)
-# Environment: RUNS (default 5) timed runs per scene; KERNELS=0 skips the Google Benchmark kernels.
+# Environment: RUNS (default 5) timed runs per scene; KERNELS=0 skips the Google Benchmark kernels;
+# NETS=1 also runs the net deployment benchmarks (bench/run_net_scenarios.sh, bench/net_scenes/,
+# about 30 min; results in RESULTS_DIR/nets).
 # Needs hyperfine and GNU time (scripts/install-deps.sh --bench) and /usr/bin/python3.
 set -euo pipefail
 
@@ -212,6 +214,11 @@ for name, summaries, rss, cpu, hf in rows_process:
     peak = f"{max(rss):.1f}" if rss else "—"
     print(f"| {name} | {proc} | {solve:.2f} | {peak} |")
 EOF
+
+if [ "${NETS:-0}" = 1 ]; then
+  echo "net deployment benchmarks (bench/run_net_scenarios.sh)" >&2
+  "$bench_dir/run_net_scenarios.sh" "$build_dir" "$results/nets" || failed+=(nets)
+fi
 
 if [ ${#failed[@]} -gt 0 ]; then
   echo "$0: failed scenes: ${failed[*]}" >&2
