@@ -85,7 +85,8 @@ void ExpectGeneralizedAlphaLoopAllocatesNothing(JacobianUpdate update, int eleme
   GeneralizedAlphaIntegrator integrator(model, settings);
   State state = MakeInitialState(model);
   ASSERT_TRUE(integrator.Initialize(&state));
-  EnergyTracker energy(model, integrator.workspace(), state.q);
+  EnergyTracker energy(model, integrator.workspace(), state, 1.0,
+                       GeneralizedAlphaIntegrator::kEnergyQuadrature);
   ASSERT_TRUE(integrator.Step(1e-3, &state).accepted);  // warm-up: sizes and first factorisation
 
   int rejected = 0;
@@ -94,7 +95,7 @@ void ExpectGeneralizedAlphaLoopAllocatesNothing(JacobianUpdate update, int eleme
       const double h = i % 10 < 5 ? 1e-3 : 5e-4;  // step-size changes force refactorisations
       const StepOutcome outcome = integrator.Step(h, &state);
       if (!outcome.accepted) ++rejected;
-      energy.Advance(model, integrator.workspace(), state.q, state.v, 1.0);
+      energy.Advance(model, integrator.workspace(), state, 1.0);
     }
   });
   EXPECT_EQ(rejected, 0);

@@ -23,32 +23,39 @@ double CalcStrainEnergy(const Model& model, const Workspace& ws, const VectorXd&
   return energy + CalcLinkEnergy(model, ws, q);
 }
 
-EnergyTracker::EnergyTracker(const Model& model, const Workspace& ws, const VectorXd& q,
-                             double load_factor, ForceQuadrature quadrature)
-    : q_(q),
+EnergyTracker::EnergyTracker(const Model& model, const Workspace& ws, const State& state,
+                             double load_factor, EnergyQuadrature quadrature)
+    : t_(state.t),
+      q_(state.q),
       applied_(ws.applied_force),
-      viscous_(ws.viscous_force),
       load_factor_(load_factor),
-      quadrature_(quadrature) {
-  account_.strain = CalcStrainEnergy(model, ws, q);
+      quadrature_(quadrature),
+      v_(state.v),
+      power_(state.v.dot(ws.viscous_force)) {
+  account_.strain = CalcStrainEnergy(model, ws, state.q);
   // Gravity and the tidal potential of an orbital frame; "0.0 −" gives +0, not −0, without them.
-  account_.gravity =
-      0.0 - load_factor * ws.gravity_force.dot(q) + CalcOrbitalPotential(model, ws, q);
+  account_.gravity = 0.0 - load_factor * ws.gravity_force.dot(state.q) +
+                     CalcOrbitalPotential(model, ws, state.q);
 }
 
-void EnergyTracker::Advance(const Model& model, const Workspace& ws, const VectorXd& q,
-                            const VectorXd& v, double load_factor) {
+void EnergyTracker::Advance(const Model& model, const Workspace& ws, const State& state,
+                            double load_factor) {
+  const VectorXd& q = state.q;
   // ∫ Q · dq ≈ (w_n Q_n + w_{n+1} Q_{n+1}) · (q_{n+1} − q_n): trapezoidal w = (½, ½); midpoint
   // w = (0, 1), `ws` then holding Q_{n+½}.
-  const double w_then = quadrature_ == ForceQuadrature::kTrapezoidal ? 0.5 : 0.0;
+  const bool midpoint = quadrature_ == EnergyQuadrature::kMidpoint;
+  const double w_then = midpoint ? 0.0 : 0.5;
   const double w_now = 1.0 - w_then;
   double work = 0.0;
   double dissipated = 0.0;
   for (Index i = 0; i < q.size(); ++i) {
     const double dq = q[i] - q_[i];
     work += (w_then * applied_[i] + w_now * ws.applied_force[i]) * dq;
-    dissipated += (w_then * viscous_[i] + w_now * ws.viscous_force[i]) * dq;
+    if (midpoint) dissipated += ws.viscous_force[i] * dq;
   }
+  const double power = state.v.dot(ws.viscous_force);
+  if (quadrature_ == EnergyQuadrature::kTrapezoidal)
+    dissipated = 0.5 * (state.t - t_) * (power_ + power);
   // A growing gravity load (static load stepping) changes V = −λ Q_gᵀq also through λ; that part,
   // −∫ Q_gᵀq dλ, is work put in by raising the load, so the balance stays constant.
   const double gravity_then = ws.gravity_force.dot(q_);
@@ -56,21 +63,23 @@ void EnergyTracker::Advance(const Model& model, const Workspace& ws, const Vecto
   work -= 0.5 * (gravity_then + gravity_now) * (load_factor - load_factor_);
   account_.work += work;
   account_.dissipated += dissipated;
-  account_.kinetic = CalcKineticEnergy(model, ws, v);
+  account_.kinetic = CalcKineticEnergy(model, ws, state.v);
   account_.strain = CalcStrainEnergy(model, ws, q);
   account_.gravity =
       0.0 - load_factor * ws.gravity_force.dot(q) + CalcOrbitalPotential(model, ws, q);
+  t_ = state.t;
   q_ = q;
+  v_ = state.v;
+  power_ = power;
   load_factor_ = load_factor;
   applied_ = ws.applied_force;
-  viscous_ = ws.viscous_force;
 }
 
 void EnergyTracker::Release(const Model& model, const Workspace& ws, double released) {
   account_.dissipated += released;
   account_.strain = CalcStrainEnergy(model, ws, q_);
   applied_ = ws.applied_force;
-  viscous_ = ws.viscous_force;
+  power_ = v_.dot(ws.viscous_force);
 }
 
 }  // namespace ancfnet

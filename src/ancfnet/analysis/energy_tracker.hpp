@@ -4,6 +4,7 @@
 
 #include "ancfnet/analysis/energy.hpp"
 #include "ancfnet/model/model.hpp"
+#include "ancfnet/state/state.hpp"
 #include "ancfnet/state/workspace.hpp"
 
 namespace ancfnet {
@@ -13,26 +14,31 @@ double CalcKineticEnergy(const Model& model, const Workspace& ws, const VectorXd
 /// Strain energy Σ U_e(q) of the cable elements plus the energy stored in the intact links (J).
 double CalcStrainEnergy(const Model& model, const Workspace& ws, const VectorXd& q);
 
-/// Which forces stand for a step in ∫ Q · dq: the mean of those at its two ends (trapezoidal
-/// rule), or those at its middle, as the implicit midpoint rule uses them; with the latter the
-/// discrete balance of kinetic energy is exact, ΔT = (Q_ext − Q_int)(q_{n+½}) · Δq.
-enum class ForceQuadrature { kTrapezoidal, kMidpoint };
+/// How a step's work W and dissipation D are integrated (docs/theory.md, "Energy accounting"):
+enum class EnergyQuadrature {
+  /// Statics: W with the trapezoidal rule in q along the load path; nothing moves, D = 0.
+  kLoadPath,
+  /// W with the trapezoidal rule in q; D with the trapezoidal rule in time of the dissipated
+  /// power P = q̇ᵀ Q_visc ≥ 0 at the two ends of the step: never negative (it overestimates D
+  /// where the step does not resolve a damped vibration).
+  kTrapezoidal,
+  /// The implicit midpoint rule: W and D with the forces it left in the workspace at
+  /// (q_{n+½}, v_{n+½}) = (q̄, v̄); the discrete kinetic-energy balance is then exact.
+  kMidpoint,
+};
 
 /// Accumulates the work of the applied loads W = ∫ Q_applied · dq and the energy dissipated by
-/// material damping D = ∫ Q_visc · dq over each step (ForceQuadrature), and evaluates
-/// the state energies. Gravity enters through its potential V = −λ Q_gᵀ q (Q_g constant); when λ
+/// material damping D = ∫ q̇ · Q_visc dt over each step (EnergyQuadrature), and evaluates the
+/// state energies. Gravity enters through its potential V = −λ Q_gᵀ q (Q_g constant); when λ
 /// grows (static load steps) the work −∫ Q_gᵀ q dλ of raising it is added to W.
 class EnergyTracker {
  public:
-  /// Starts at `q` and load factor λ with the forces currently in `ws` (applied_force,
-  /// viscous_force).
-  EnergyTracker(const Model& model, const Workspace& ws, const VectorXd& q,
-                double load_factor = 1.0,
-                ForceQuadrature quadrature = ForceQuadrature::kTrapezoidal);
-  /// Advances to the accepted state (q, v) with the forces in `ws` evaluated there (trapezoidal)
-  /// or at the middle of the step (midpoint).
-  void Advance(const Model& model, const Workspace& ws, const VectorXd& q, const VectorXd& v,
-               double load_factor);
+  /// Starts at `state` and load factor λ with the forces currently in `ws` (applied_force).
+  EnergyTracker(const Model& model, const Workspace& ws, const State& state, double load_factor,
+                EnergyQuadrature quadrature);
+  /// Advances to the accepted state with the forces in `ws` evaluated there (kLoadPath,
+  /// kTrapezoidal) or at the middle of the step (kMidpoint).
+  void Advance(const Model& model, const Workspace& ws, const State& state, double load_factor);
   /// After links failed at the current state: their stored energy `released` (J) leaves the
   /// strain energy and is counted as dissipated, and the forces now in `ws` (without them)
   /// start the next step.
@@ -41,11 +47,13 @@ class EnergyTracker {
 
  private:
   EnergyAccount account_;
+  double t_ = 0.0;
   VectorXd q_;
   VectorXd applied_;
-  VectorXd viscous_;
   double load_factor_ = 1.0;
-  ForceQuadrature quadrature_;
+  EnergyQuadrature quadrature_;
+  VectorXd v_;
+  double power_ = 0.0;  // q̇ᵀ Q_visc at the last state (kTrapezoidal)
 };
 
 }  // namespace ancfnet

@@ -23,7 +23,7 @@ class ExplicitVerletIntegrator {
   /// Rejected, with the state unchanged, when the result is not finite.
   StepOutcome Step(double h, State* state);
   const Workspace& workspace() const { return ws_; }
-  static constexpr ForceQuadrature kForceQuadrature = ForceQuadrature::kTrapezoidal;
+  static constexpr EnergyQuadrature kEnergyQuadrature = EnergyQuadrature::kTrapezoidal;
   /// Largest stable step 2/ω_max for small motions about the configuration q (s), with ω_max
   /// bounded from above by the largest element frequency (Irons & Treharne 1971), so the
   /// estimate is on the safe side.

@@ -36,7 +36,7 @@ class GeneralizedAlphaIntegrator {
   StepOutcome Step(double h, State* state);
   /// Forces evaluated at the last accepted state (for energy accounting).
   const Workspace& workspace() const { return ws_; }
-  static constexpr ForceQuadrature kForceQuadrature = ForceQuadrature::kTrapezoidal;
+  static constexpr EnergyQuadrature kEnergyQuadrature = EnergyQuadrature::kTrapezoidal;
 
   /// Newton problem of one step; its unknown is the free part of a_{n+1}.
   class StepProblem;

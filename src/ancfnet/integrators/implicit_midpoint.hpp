@@ -31,7 +31,7 @@ class ImplicitMidpointIntegrator {
   StepOutcome Step(double h, State* state);
   /// Forces at the middle of the last accepted step (for energy accounting).
   const Workspace& workspace() const { return ws_; }
-  static constexpr ForceQuadrature kForceQuadrature = ForceQuadrature::kMidpoint;
+  static constexpr EnergyQuadrature kEnergyQuadrature = EnergyQuadrature::kMidpoint;
 
   /// Newton problem of one step; its unknown is the free part of the mean acceleration.
   class StepProblem;

@@ -24,9 +24,9 @@ SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings,
     result.message = "the mass matrix is singular";
     return result;
   }
-  EnergyTracker energy(model, integrator.workspace(), state->q, 1.0,
-                       Integrator::kForceQuadrature);
-  energy.Advance(model, integrator.workspace(), state->q, state->v, 1.0);
+  EnergyTracker energy(model, integrator.workspace(), *state, 1.0,
+                       Integrator::kEnergyQuadrature);
+  energy.Advance(model, integrator.workspace(), *state, 1.0);
   if (!EmitOutput(output, *state, energy.account(), &result)) return result;
 
   const double nominal = settings.time_step;
@@ -65,7 +65,7 @@ SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings,
     if (std::abs(state->t - end) <= time_eps) state->t = end;
     if (output_interval > 0.0 && std::abs(state->t - next_output) <= time_eps)
       state->t = next_output;
-    energy.Advance(model, integrator.workspace(), state->q, state->v, 1.0);
+    energy.Advance(model, integrator.workspace(), *state, 1.0);
     if (can_fail) {
       const FailureCheck check = ApplyFailures(model, state, &result.failures);
       if (check.broken_links > 0) {

@@ -62,7 +62,7 @@ SolveResult SolveStatic(const Model& model, const StaticSettings& settings,
   state->t = 0.0;
   CalcInternalForces(model, state->q, state->v, ws);
   CalcExternalForces(model, state->q, 0.0, ws);
-  EnergyTracker energy(model, ws, state->q, /*load_factor=*/0.0);
+  EnergyTracker energy(model, ws, *state, /*load_factor=*/0.0, EnergyQuadrature::kLoadPath);
   SolveResult result;
   if (!EmitOutput(output, *state, energy.account(), &result)) return result;
 
@@ -109,7 +109,7 @@ SolveResult SolveStatic(const Model& model, const StaticSettings& settings,
     cuts_in_a_row = 0;
     CalcInternalForces(model, state->q, state->v, ws);
     CalcExternalForces(model, state->q, load_factor, ws);
-    energy.Advance(model, ws, state->q, state->v, load_factor);
+    energy.Advance(model, ws, *state, load_factor);
     if (!EmitOutput(output, *state, energy.account(), &result)) return result;
   }
   return result;
