@@ -20,6 +20,8 @@ std::vector<std::string> ProbeColumns(const Probe& probe) {
       return {n + ".area"};
     case ProbeQuantity::kCentroid:
       return {n + ".x", n + ".y", n + ".z"};
+    case ProbeQuantity::kCentroidVelocity:
+      return {n + ".vx", n + ".vy", n + ".vz"};
     case ProbeQuantity::kDistance:
       return {n + ".distance"};
     case ProbeQuantity::kMaxTension:
@@ -44,6 +46,7 @@ ThreadTension CalcMaxThreadTension(const Model& model, const Net& net, const Vec
 }
 
 Vector3d CalcNetCentroid(const Model& model, const Net& net, const VectorXd& q) {
+  // (Given velocities, the mean velocity of the knots.)
   std::vector<Vector3d> knots;
   for (Index knot : net.knots) knots.push_back(q.segment<3>(model.point_masses()[knot].dof));
   return CalcCentroid(knots);
@@ -70,8 +73,11 @@ void EvaluateProbe(const Probe& probe, const Model& model, const State& state,
       values->push_back(CalcMouthArea(polygon, net.axis));
       break;
     }
-    case ProbeQuantity::kCentroid: {
-      const Vector3d c = CalcNetCentroid(model, model.nets()[probe.net], state.q);
+    case ProbeQuantity::kCentroid:
+    case ProbeQuantity::kCentroidVelocity: {
+      // The centroid is linear in the knot positions: its velocity is the same mean of velocities.
+      const VectorXd& x = probe.quantity == ProbeQuantity::kCentroid ? state.q : state.v;
+      const Vector3d c = CalcNetCentroid(model, model.nets()[probe.net], x);
       values->insert(values->end(), {c.x(), c.y(), c.z()});
       break;
     }

@@ -235,6 +235,7 @@ std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
          {"energy", ProbeQuantity::kEnergy},
          {"mouth_area", ProbeQuantity::kMouthArea},
          {"centroid", ProbeQuantity::kCentroid},
+         {"centroid_velocity", ProbeQuantity::kCentroidVelocity},
          {"distance", ProbeQuantity::kDistance},
          {"max_tension", ProbeQuantity::kMaxTension},
          {"link_force", ProbeQuantity::kLinkForce}});

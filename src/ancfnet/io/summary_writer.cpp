@@ -52,10 +52,12 @@ Json ProbeJson(const Probe& probe, const Model& model, const State& state,
         energies[columns[i].substr(probe.name.size() + 1)] = Number(values[i]);
       return {{"energy", energies}};
     }
-    case ProbeQuantity::kCentroid: {
+    case ProbeQuantity::kCentroid:
+    case ProbeQuantity::kCentroidVelocity: {
       Json vector = Json::array();
       for (double value : values) vector.push_back(Number(value));
-      return {{"centroid", vector}};
+      return {{probe.quantity == ProbeQuantity::kCentroid ? "centroid" : "centroid_velocity",
+               vector}};
     }
     case ProbeQuantity::kMouthArea:
       return {{"mouth_area", Number(values[0])}};

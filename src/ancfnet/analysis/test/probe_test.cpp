@@ -47,5 +47,25 @@ TEST(NetProbe, MaxTensionFindsTheStretchedThread) {
   EXPECT_EQ(values, (std::vector<double>{t.tension, 1.0}));
 }
 
+TEST(NetProbe, CentroidVelocityIsTheMeanKnotVelocity) {
+  NetSpec spec;
+  spec.name = "line";
+  spec.topology = MakeGraphNet({Vector3d(0, 0, 0), Vector3d(1, 0, 0)}, {{0, 1}});
+  spec.thread = MakeThreadProperties({.youngs_modulus = 1e9, .density = 1000},
+                                     MakeCircleSection(0.002));
+  spec.knot_masses = {{0, 0.1, Vector3d(1, 2, 3)}, {1, 0.1, Vector3d(3, 0, -1)}};
+  ModelBuilder builder;
+  AddNet(builder, spec);
+  const Model model = builder.Build();
+  Probe probe;
+  probe.name = "c";
+  probe.quantity = ProbeQuantity::kCentroidVelocity;
+  probe.net = 0;
+  EXPECT_EQ(ProbeColumns(probe), (std::vector<std::string>{"c.vx", "c.vy", "c.vz"}));
+  std::vector<double> values;
+  EvaluateProbe(probe, model, MakeInitialState(model), {}, &values);
+  EXPECT_EQ(values, (std::vector<double>{2.0, 1.0, 1.0}));
+}
+
 }  // namespace
 }  // namespace ancfnet
