@@ -1,7 +1,5 @@
 #include "ancfnet/integrators/generalized_alpha.hpp"
 
-#include "ancfnet/integrators/initial_acceleration.hpp"
-
 namespace ancfnet {
 
 GeneralizedAlphaCoefficients GeneralizedAlphaCoefficients::FromSpectralRadius(double rho) {
@@ -22,33 +20,33 @@ GeneralizedAlphaCoefficients GeneralizedAlphaCoefficients::FromSpectralRadius(do
 class GeneralizedAlphaIntegrator::StepProblem {
  public:
   StepProblem(GeneralizedAlphaIntegrator& owner, double h, State& state)
-      : owner_(owner), state_(state) {
+      : owner_(owner), core_(owner.core_), state_(state), h_(h) {
     const GeneralizedAlphaCoefficients& c = owner.coefficients_;
     const double ratio = (1.0 - c.alpha_f) / (1.0 - c.alpha_m);
     beta_prime_ = h * h * c.beta * ratio;
     gamma_prime_ = h * c.gamma * ratio;
-    h_ = h;
   }
 
-  Index size() const { return owner_.dofs_.num_unknowns(); }
+  Index size() const { return core_.dofs().num_unknowns(); }
 
   // Starting guess of a_{n+1}, then q and v from the update formulas.
   void Reset() {
     const GeneralizedAlphaCoefficients& c = owner_.coefficients_;
-    const State& prev = owner_.previous_;
+    const State& prev = core_.previous();
     const VectorXd& a_bar = owner_.a_bar_;
+    const std::vector<Index>& free = core_.dofs().coordinates();
     state_.t = prev.t + h_;
     state_.a = prev.a;
     if (owner_.predictor_ == Predictor::kConstantPosition) {
       // a_{n+1} such that q_{n+1} = q_n: ā_{n+1} = −(h v_n + h² (½ − β) ā_n) / (h² β).
-      for (Index i : owner_.dofs_.coordinates()) {
+      for (Index i : free) {
         const double a_bar_next =
             -(h_ * prev.v[i] + h_ * h_ * (0.5 - c.beta) * a_bar[i]) / (h_ * h_ * c.beta);
         state_.a[i] = ((1.0 - c.alpha_m) * a_bar_next - c.alpha_f * prev.a[i] +
                        c.alpha_m * a_bar[i]) / (1.0 - c.alpha_f);
       }
     }
-    for (Index i : owner_.dofs_.coordinates()) {
+    for (Index i : free) {
       const double a_bar_next =
           ((1.0 - c.alpha_f) * state_.a[i] + c.alpha_f * prev.a[i] - c.alpha_m * a_bar[i]) /
           (1.0 - c.alpha_m);
@@ -56,40 +54,30 @@ class GeneralizedAlphaIntegrator::StepProblem {
                     h_ * h_ * ((0.5 - c.beta) * a_bar[i] + c.beta * a_bar_next);
       state_.v[i] = prev.v[i] + h_ * ((1.0 - c.gamma) * a_bar[i] + c.gamma * a_bar_next);
     }
-    owner_.dofs_.AdvanceMoving(prev.q, prev.v, h_, &state_.q);
+    core_.dofs().AdvanceMoving(prev.q, prev.v, h_, &state_.q);
   }
 
-  void CalcResidual(VectorXd* r) {
-    CalcInternalForces(owner_.model_, state_.q, state_.v, owner_.ws_);
-    CalcExternalForces(owner_.model_, state_.q, 1.0, owner_.ws_);
-    owner_.mass_times_a_.noalias() = owner_.mass_ * state_.a;
-    owner_.residual_full_ =
-        owner_.mass_times_a_ + owner_.ws_.internal_force - owner_.ws_.external_force;
-    owner_.dofs_.Restrict(owner_.residual_full_, r);
-  }
+  void CalcResidual(VectorXd* r) { core_.CalcResidual(state_.q, state_.v, state_.a, r); }
 
   const SparseMatrixd& CalcIterationMatrix() {
-    AssembleIterationMatrix(owner_.model_, state_.q, state_.v,
-                            {.mass = 1.0, .damping = gamma_prime_, .stiffness = beta_prime_}, 1.0,
-                            owner_.ws_, &owner_.iteration_matrix_);
-    return owner_.iteration_matrix_.matrix();
+    return core_.CalcIterationMatrix(
+        state_.q, state_.v, {.mass = 1.0, .damping = gamma_prime_, .stiffness = beta_prime_});
   }
 
   void ApplyIncrement(const VectorXd& da, double scale) {
-    owner_.dofs_.AddExpanded(da, scale, &state_.a);
-    owner_.dofs_.AddExpanded(da, scale * beta_prime_, &state_.q);
-    owner_.dofs_.AddExpanded(da, scale * gamma_prime_, &state_.v);
+    core_.dofs().AddExpanded(da, scale, &state_.a);
+    core_.dofs().AddExpanded(da, scale * beta_prime_, &state_.q);
+    core_.dofs().AddExpanded(da, scale * gamma_prime_, &state_.v);
   }
 
   // Convergence is judged on the position increment Δq = β' Δa.
   double IncrementNorm(const VectorXd& da) const {
-    const NewtonSettings& s = owner_.newton_settings_;
-    return WeightedRmsNorm(da, state_.q, owner_.dofs_.coordinates(), beta_prime_,
-                           s.relative_tolerance, s.absolute_tolerance);
+    return core_.IncrementNorm(da, state_.q, beta_prime_);
   }
 
  private:
   GeneralizedAlphaIntegrator& owner_;
+  ImplicitStepCore& core_;
   State& state_;
   double h_ = 0.0;
   double beta_prime_ = 0.0;
@@ -98,41 +86,21 @@ class GeneralizedAlphaIntegrator::StepProblem {
 
 GeneralizedAlphaIntegrator::GeneralizedAlphaIntegrator(const Model& model,
                                                        const DynamicSettings& settings)
-    : model_(model),
-      coefficients_(GeneralizedAlphaCoefficients::FromSpectralRadius(settings.spectral_radius)),
-      ws_(model),
-      dofs_(DofMap::FreeCoordinates(model)),
-      iteration_matrix_(model, dofs_),
-      newton_(settings.newton, settings.jacobian_update, /*line_search=*/false),
-      newton_settings_(settings.newton),
-      residual_full_(model.num_dofs()),
-      mass_times_a_(model.num_dofs()) {
-  const DofMap all = DofMap::AllCoordinates(model);
-  SystemMatrix mass(model, all);
-  AssembleMassMatrix(model, ws_, &mass);
-  mass_ = mass.matrix();
-}
+    : core_(model, settings),
+      coefficients_(GeneralizedAlphaCoefficients::FromSpectralRadius(settings.spectral_radius)) {}
 
 bool GeneralizedAlphaIntegrator::Initialize(State* state) {
-  ws_.link_broken = state->link_broken;
-  newton_.InvalidateJacobian();  // also called after a failure: the links have changed
-  if (!CalcInitialAcceleration(model_, dofs_, ws_, state)) return false;
+  if (!core_.Initialize(state)) return false;
   a_bar_ = state->a;
-  previous_ = *state;
   return true;
 }
 
 StepOutcome GeneralizedAlphaIntegrator::Step(double h, State* state) {
-  previous_.t = state->t;
-  previous_.q = state->q;
-  previous_.v = state->v;
-  previous_.a = state->a;
-  if (h != last_h_) newton_.InvalidateJacobian();  // the iteration matrix depends on h
-  last_h_ = h;
+  core_.BeginStep(h, *state);
   StepProblem problem(*this, h, *state);
   predictor_ = Predictor::kConstantAcceleration;
   problem.Reset();
-  NewtonResult result = newton_.Solve(problem);
+  NewtonResult result = core_.Solve(problem);
   if (!result.converged) {
     // Stiff modes excited by a sudden load carry large, sign-alternating accelerations that
     // make a_{n+1} = a_n a poor guess; q_{n+1} = q_n is close in those modes. One retry with it
@@ -140,7 +108,7 @@ StepOutcome GeneralizedAlphaIntegrator::Step(double h, State* state) {
     predictor_ = Predictor::kConstantPosition;
     problem.Reset();
     const NewtonResult first = result;
-    result = newton_.Solve(problem);
+    result = core_.Solve(problem);
     result.iterations += first.iterations;
     result.jacobian_updates += first.jacobian_updates;
   }
@@ -148,20 +116,20 @@ StepOutcome GeneralizedAlphaIntegrator::Step(double h, State* state) {
                       .newton_iterations = result.iterations,
                       .jacobian_updates = result.jacobian_updates,
                       .failure = result.failure};
+  const State& previous = core_.previous();
   if (!result.converged) {
-    state->t = previous_.t;
-    state->q = previous_.q;
-    state->v = previous_.v;
-    state->a = previous_.a;
+    state->t = previous.t;
+    state->q = previous.q;
+    state->v = previous.v;
+    state->a = previous.a;
     return outcome;
   }
   const GeneralizedAlphaCoefficients& c = coefficients_;
-  for (Index i : dofs_.coordinates())
-    a_bar_[i] = ((1.0 - c.alpha_f) * state->a[i] + c.alpha_f * previous_.a[i] -
+  for (Index i : core_.dofs().coordinates())
+    a_bar_[i] = ((1.0 - c.alpha_f) * state->a[i] + c.alpha_f * previous.a[i] -
                  c.alpha_m * a_bar_[i]) / (1.0 - c.alpha_m);
   // Forces at the accepted state, for the energy account.
-  CalcInternalForces(model_, state->q, state->v, ws_);
-  CalcExternalForces(model_, state->q, 1.0, ws_);
+  core_.CalcForces(state->q, state->v);
   return outcome;
 }
 

@@ -4,12 +4,8 @@
 /// equations of motion at t_{n+1} and an auxiliary acceleration ā carries the α-weighting.
 
 #include "ancfnet/analysis/energy_tracker.hpp"
-#include "ancfnet/assembly/forces.hpp"
+#include "ancfnet/integrators/implicit_step_core.hpp"
 #include "ancfnet/integrators/step_outcome.hpp"
-#include "ancfnet/solvers/analysis_settings.hpp"
-#include "ancfnet/solvers/newton.hpp"
-#include "ancfnet/solvers/solve_result.hpp"
-#include "ancfnet/state/state.hpp"
 
 namespace ancfnet {
 
@@ -35,29 +31,19 @@ class GeneralizedAlphaIntegrator {
   /// Advances `state` by h. On rejection the state is left unchanged.
   StepOutcome Step(double h, State* state);
   /// Forces evaluated at the last accepted state (for energy accounting).
-  const Workspace& workspace() const { return ws_; }
+  const Workspace& workspace() const { return core_.workspace(); }
   static constexpr EnergyQuadrature kEnergyQuadrature = EnergyQuadrature::kTrapezoidal;
 
   /// Newton problem of one step; its unknown is the free part of a_{n+1}.
   class StepProblem;
 
  private:
-  const Model& model_;
+  ImplicitStepCore core_;
   GeneralizedAlphaCoefficients coefficients_;
-  Workspace ws_;
-  DofMap dofs_;
-  SystemMatrix iteration_matrix_;
-  SparseMatrixd mass_;  // all coordinates
-  NewtonSolver newton_;
-  NewtonSettings newton_settings_;
-  double last_h_ = 0.0;
   // Starting guess of a step's Newton iterations: a_{n+1} = a_n first; q_{n+1} = q_n on retry.
   enum class Predictor { kConstantAcceleration, kConstantPosition };
   Predictor predictor_ = Predictor::kConstantAcceleration;
   VectorXd a_bar_;  // auxiliary acceleration ā_n
-  State previous_;  // state at t_n while a step is attempted
-  VectorXd residual_full_;
-  VectorXd mass_times_a_;
 };
 
 }  // namespace ancfnet

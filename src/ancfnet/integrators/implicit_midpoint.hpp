@@ -9,12 +9,8 @@
 /// (docs/theory.md, "Implicit midpoint rule").
 
 #include "ancfnet/analysis/energy_tracker.hpp"
-#include "ancfnet/assembly/forces.hpp"
+#include "ancfnet/integrators/implicit_step_core.hpp"
 #include "ancfnet/integrators/step_outcome.hpp"
-#include "ancfnet/solvers/analysis_settings.hpp"
-#include "ancfnet/solvers/newton.hpp"
-#include "ancfnet/solvers/solve_result.hpp"
-#include "ancfnet/state/state.hpp"
 
 namespace ancfnet {
 
@@ -30,24 +26,15 @@ class ImplicitMidpointIntegrator {
   /// On rejection the state is left unchanged.
   StepOutcome Step(double h, State* state);
   /// Forces at the middle of the last accepted step (for energy accounting).
-  const Workspace& workspace() const { return ws_; }
+  const Workspace& workspace() const { return core_.workspace(); }
   static constexpr EnergyQuadrature kEnergyQuadrature = EnergyQuadrature::kMidpoint;
 
   /// Newton problem of one step; its unknown is the free part of the mean acceleration.
   class StepProblem;
 
  private:
-  const Model& model_;
-  Workspace ws_;
-  DofMap dofs_;
-  SystemMatrix iteration_matrix_;
-  SparseMatrixd mass_;  // all coordinates
-  NewtonSolver newton_;
-  NewtonSettings newton_settings_;
-  double last_h_ = 0.0;
-  State previous_;  // state at t_n while a step is attempted
+  ImplicitStepCore core_;
   State midpoint_;  // q_{n+½}, v_{n+½} at the current Newton iterate
-  VectorXd residual_full_;
 };
 
 }  // namespace ancfnet

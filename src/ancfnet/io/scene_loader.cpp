@@ -222,6 +222,23 @@ void ReadLoad(const YamlValue& item, ModelBuilder* builder) {
   }
 }
 
+// Index of the item of `items` (each with a `name`) that `value` names; fails at `value`, with
+// the closest name, when there is none.
+template <class Items>
+Index ReadNamedIndex(const YamlValue& value, const Items& items, std::string_view what,
+                     std::string_view label) {
+  const std::string name = value.AsString();
+  std::vector<std::string_view> names;
+  Index found = -1;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    names.push_back(items[i].name);
+    if (items[i].name == name) found = static_cast<Index>(i);
+  }
+  if (found < 0)
+    value.Fail(fmt::format("no {} named '{}'{}", what, name, SuggestName(name, names, label)));
+  return found;
+}
+
 // Probes are read once the model is built: their points resolve to material points.
 std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
                               const std::vector<std::string>& point_masses) {
@@ -258,26 +275,9 @@ std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
       const CablePointRef point = ReadPoint(at, point_masses);
       probe.point = at.Locate([&] { return model.LocatePoint(point.cable, point.s); });
     } else if (of_a_link) {
-      const YamlValue link = map.Get("link");
-      const std::string link_name = link.AsString();
-      std::vector<std::string_view> names;
-      for (std::size_t i = 0; i < model.links().size(); ++i) {
-        names.push_back(model.links()[i].name);
-        if (model.links()[i].name == link_name) probe.link = static_cast<Index>(i);
-      }
-      if (probe.link < 0)
-        link.Fail(fmt::format("no spring-damper named '{}'{}", link_name,
-                              SuggestName(link_name, names, "spring-dampers")));
+      probe.link = ReadNamedIndex(map.Get("link"), model.links(), "spring-damper", "spring-dampers");
     } else if (!whole_system) {
-      const YamlValue net = map.Get("net");
-      const std::string net_name = net.AsString();
-      std::vector<std::string_view> names;
-      for (std::size_t i = 0; i < model.nets().size(); ++i) {
-        names.push_back(model.nets()[i].name);
-        if (model.nets()[i].name == net_name) probe.net = static_cast<Index>(i);
-      }
-      if (probe.net < 0)
-        net.Fail(fmt::format("no net named '{}'{}", net_name, SuggestName(net_name, names, "nets")));
+      probe.net = ReadNamedIndex(map.Get("net"), model.nets(), "net", "nets");
       probe.reference =
           CalcNetCentroid(model, model.nets()[probe.net], model.initial_positions());
     }

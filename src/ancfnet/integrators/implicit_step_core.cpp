@@ -1,0 +1,62 @@
+#include "ancfnet/integrators/implicit_step_core.hpp"
+
+#include "ancfnet/integrators/initial_acceleration.hpp"
+
+namespace ancfnet {
+
+ImplicitStepCore::ImplicitStepCore(const Model& model, const DynamicSettings& settings)
+    : model_(model),
+      ws_(model),
+      dofs_(DofMap::FreeCoordinates(model)),
+      iteration_matrix_(model, dofs_),
+      newton_(settings.newton, settings.jacobian_update, /*line_search=*/false),
+      newton_settings_(settings.newton),
+      residual_full_(model.num_dofs()) {
+  const DofMap all = DofMap::AllCoordinates(model);
+  SystemMatrix mass(model, all);
+  AssembleMassMatrix(model, ws_, &mass);
+  mass_ = mass.matrix();
+}
+
+bool ImplicitStepCore::Initialize(State* state) {
+  ws_.link_broken = state->link_broken;
+  newton_.InvalidateJacobian();
+  if (!CalcInitialAcceleration(model_, dofs_, ws_, state)) return false;
+  previous_ = *state;
+  return true;
+}
+
+void ImplicitStepCore::BeginStep(double h, const State& state) {
+  previous_.t = state.t;
+  previous_.q = state.q;
+  previous_.v = state.v;
+  previous_.a = state.a;
+  if (h != last_h_) newton_.InvalidateJacobian();
+  last_h_ = h;
+}
+
+void ImplicitStepCore::CalcResidual(const VectorXd& q, const VectorXd& v, const VectorXd& a,
+                                    VectorXd* r) {
+  CalcForces(q, v);
+  residual_full_.noalias() = mass_ * a;
+  residual_full_ += ws_.internal_force - ws_.external_force;
+  dofs_.Restrict(residual_full_, r);
+}
+
+const SparseMatrixd& ImplicitStepCore::CalcIterationMatrix(const VectorXd& q, const VectorXd& v,
+                                                           const IterationWeights& weights) {
+  AssembleIterationMatrix(model_, q, v, weights, 1.0, ws_, &iteration_matrix_);
+  return iteration_matrix_.matrix();
+}
+
+void ImplicitStepCore::CalcForces(const VectorXd& q, const VectorXd& v) {
+  CalcInternalForces(model_, q, v, ws_);
+  CalcExternalForces(model_, q, 1.0, ws_);
+}
+
+double ImplicitStepCore::IncrementNorm(const VectorXd& da, const VectorXd& q, double scale) const {
+  return WeightedRmsNorm(da, q, dofs_.coordinates(), scale, newton_settings_.relative_tolerance,
+                         newton_settings_.absolute_tolerance);
+}
+
+}  // namespace ancfnet

@@ -1,0 +1,55 @@
+#pragma once
+/// @file What the implicit integrators (generalised-α, implicit midpoint) share: the numbering of
+/// the unknowns, scratch, the full mass matrix, the iteration matrix and its Newton solver, and
+/// the state at t_n while a step is attempted. Each integrator keeps only its own update formulas.
+
+#include "ancfnet/assembly/forces.hpp"
+#include "ancfnet/solvers/analysis_settings.hpp"
+#include "ancfnet/solvers/newton.hpp"
+#include "ancfnet/solvers/solve_result.hpp"
+#include "ancfnet/state/state.hpp"
+
+namespace ancfnet {
+
+class ImplicitStepCore {
+ public:
+  ImplicitStepCore(const Model& model, const DynamicSettings& settings);
+
+  /// Takes over the state's broken links, drops the stored Jacobian (also after a failure) and
+  /// sets the consistent acceleration a = M⁻¹ (Q_ext − Q_int). False when M is singular.
+  bool Initialize(State* state);
+  /// Saves the state at t_n; drops the factorisation when h changed (the iteration matrix
+  /// depends on h).
+  void BeginStep(double h, const State& state);
+  /// Newton iterations on `problem` with the shared solver.
+  template <class Problem>
+  NewtonResult Solve(Problem& problem) { return newton_.Solve(problem); }
+
+  /// r = (M a + Q_int(q, v) − Q_ext(q)) restricted to the unknowns; the forces stay in ws().
+  void CalcResidual(const VectorXd& q, const VectorXd& v, const VectorXd& a, VectorXd* r);
+  /// c_M M + c_C C + c_K K at (q, v) over the unknowns.
+  const SparseMatrixd& CalcIterationMatrix(const VectorXd& q, const VectorXd& v,
+                                           const IterationWeights& weights);
+  /// Forces at (q, v) into ws(), for the energy account.
+  void CalcForces(const VectorXd& q, const VectorXd& v);
+  /// Weighted RMS norm of the position change scale · Δa against positions q.
+  double IncrementNorm(const VectorXd& da, const VectorXd& q, double scale) const;
+
+  const DofMap& dofs() const { return dofs_; }
+  const State& previous() const { return previous_; }
+  const Workspace& workspace() const { return ws_; }
+
+ private:
+  const Model& model_;
+  Workspace ws_;
+  DofMap dofs_;
+  SystemMatrix iteration_matrix_;
+  SparseMatrixd mass_;  // all coordinates
+  NewtonSolver newton_;
+  NewtonSettings newton_settings_;
+  double last_h_ = 0.0;
+  State previous_;
+  VectorXd residual_full_;
+};
+
+}  // namespace ancfnet
