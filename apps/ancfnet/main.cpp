@@ -1,4 +1,4 @@
-// The ancfnet command-line tool: run, static and check a scene file.
+// The ancfnet command-line tool: run, static, check and modal for a scene file.
 // Exit codes: 0 success, 2 invalid input (one line on stderr; also a model too large for the
 // memory), 3 the solver gave up (outputs written so far are kept and summary.json says why),
 // 1 an unexpected internal error (a bug).
@@ -13,6 +13,7 @@
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/io/scene_loader.hpp"
 #include "ancfnet/run/run_scene.hpp"
+#include "modal_command.hpp"
 #include "scene_report.hpp"
 
 namespace {
@@ -68,6 +69,8 @@ int main(int argc, char** argv) {
   }
   CLI::App* check = app.add_subcommand("check", "Validate a scene file and describe the model");
   check->add_option("scene", scene_file, "Scene file (YAML)")->required();
+  ancfnet::ModalCommand modal;
+  ancfnet::AddModalCommand(app, &modal);
 
   try {
     app.parse(argc, argv);
@@ -80,6 +83,7 @@ int main(int argc, char** argv) {
       ancfnet::PrintSceneReport(ancfnet::LoadScene(scene_file), stdout);
       return 0;
     }
+    if (*modal.command) return ancfnet::RunModalCommand(modal);
     const auto type = *run_static ? std::optional(ancfnet::AnalysisType::kStatic) : std::nullopt;
     return RunCommand(scene_file, output_dir, quiet, type);
   } catch (const ancfnet::InputError& e) {

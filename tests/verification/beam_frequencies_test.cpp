@@ -192,3 +192,30 @@ TEST(ModalAnalysis, AxialRodFrequencies) {
 
 }  // namespace
 }  // namespace ancfnet
+
+namespace ancfnet {
+namespace {
+
+// Kelvin–Voigt bending damping σ = E (κ + τ κ̇) gives every bending mode ζ = ω τ / 2, the exact
+// value for a material whose damping matrix is τ K_bending.
+TEST(ModalAnalysis, KelvinVoigtBendingDampingRatios) {
+  const double tau = 2e-4;
+  Material damped = kSteel;
+  damped.bending_damping_time = tau;
+  ModelBuilder builder;
+  builder.AddCable({.name = "beam",
+                    .start = Vector3d::Zero(),
+                    .end = Vector3d(kLength, 0.0, 0.0),
+                    .num_elements = 16,
+                    .properties = MakeCableProperties(damped, kBar)});
+  builder.AddClamp({"beam", 0.0});
+  const Model model = builder.Build();
+  const ModalResult modes = CalcModes(model, model.initial_positions(), {.num_modes = 8});
+  ASSERT_TRUE(modes.converged) << modes.message;
+  for (int i = 0; i < 8; ++i)
+    EXPECT_NEAR(modes.damping_ratio[i], 0.5 * modes.omega[i] * tau, 1e-6 * modes.omega[i] * tau)
+        << "mode " << i + 1;
+}
+
+}  // namespace
+}  // namespace ancfnet
