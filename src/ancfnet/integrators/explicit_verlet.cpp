@@ -9,7 +9,7 @@
 namespace ancfnet {
 
 ExplicitVerletIntegrator::ExplicitVerletIntegrator(const Model& model)
-    : model_(model), ws_(model), dofs_(DofMap::FreeCoordinates(model)) {}
+    : model_(model), damping_(model), ws_(model), dofs_(DofMap::FreeCoordinates(model)) {}
 
 bool ExplicitVerletIntegrator::Initialize(State* state) {
   ws_.link_broken = state->link_broken;
@@ -23,6 +23,7 @@ bool ExplicitVerletIntegrator::Initialize(State* state) {
 void ExplicitVerletIntegrator::CalcAcceleration(const VectorXd& q, const VectorXd& v,
                                                 VectorXd* a) {
   CalcInternalForces(model_, q, v, ws_);
+  damping_.AddForces(v, ws_);
   CalcExternalForces(model_, q, 1.0, ws_);
   net_force_ = ws_.external_force - ws_.internal_force;
   dofs_.Restrict(net_force_, &rhs_);
@@ -50,6 +51,7 @@ StepOutcome ExplicitVerletIntegrator::Step(double h, State* state) {
   }
   // Viscous forces for the energy account at the full-step velocity.
   CalcInternalForces(model_, state->q, state->v, ws_);
+  damping_.AddForces(state->v, ws_);
   return outcome;
 }
 

@@ -4,6 +4,7 @@
 
 #include "ancfnet/analysis/energy_tracker.hpp"
 #include "ancfnet/assembly/forces.hpp"
+#include "ancfnet/forces/damping_model.hpp"
 #include "ancfnet/integrators/step_outcome.hpp"
 #include "ancfnet/solvers/linear_solver.hpp"
 #include "ancfnet/state/state.hpp"
@@ -33,6 +34,7 @@ class ExplicitVerletIntegrator {
   void CalcAcceleration(const VectorXd& q, const VectorXd& v, VectorXd* a);
 
   const Model& model_;
+  DampingModel damping_;
   Workspace ws_;
   DofMap dofs_;
   SparseLinearSolver mass_solver_;

@@ -6,6 +6,7 @@ namespace ancfnet {
 
 ImplicitStepCore::ImplicitStepCore(const Model& model, const DynamicSettings& settings)
     : model_(model),
+      damping_(model),
       ws_(model),
       dofs_(DofMap::FreeCoordinates(model)),
       iteration_matrix_(model, dofs_),
@@ -21,7 +22,7 @@ ImplicitStepCore::ImplicitStepCore(const Model& model, const DynamicSettings& se
 bool ImplicitStepCore::Initialize(State* state) {
   ws_.link_broken = state->link_broken;
   newton_.InvalidateJacobian();
-  if (!CalcInitialAcceleration(model_, dofs_, ws_, state)) return false;
+  if (!CalcInitialAcceleration(model_, dofs_, damping_, ws_, state)) return false;
   previous_ = *state;
   return true;
 }
@@ -46,11 +47,14 @@ void ImplicitStepCore::CalcResidual(const VectorXd& q, const VectorXd& v, const 
 const SparseMatrixd& ImplicitStepCore::CalcIterationMatrix(const VectorXd& q, const VectorXd& v,
                                                            const IterationWeights& weights) {
   AssembleIterationMatrix(model_, q, v, weights, 1.0, ws_, &iteration_matrix_);
+  damping_.AddRayleighJacobian(weights.damping, &iteration_matrix_);
+  damping_.AddForces(v, ws_);  // the forces AssembleIterationMatrix leaves, completed
   return iteration_matrix_.matrix();
 }
 
 void ImplicitStepCore::CalcForces(const VectorXd& q, const VectorXd& v) {
   CalcInternalForces(model_, q, v, ws_);
+  damping_.AddForces(v, ws_);
   CalcExternalForces(model_, q, 1.0, ws_);
 }
 

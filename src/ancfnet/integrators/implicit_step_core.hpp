@@ -4,6 +4,7 @@
 /// the state at t_n while a step is attempted. Each integrator keeps only its own update formulas.
 
 #include "ancfnet/assembly/forces.hpp"
+#include "ancfnet/forces/damping_model.hpp"
 #include "ancfnet/solvers/analysis_settings.hpp"
 #include "ancfnet/solvers/newton.hpp"
 #include "ancfnet/solvers/solve_result.hpp"
@@ -27,10 +28,11 @@ class ImplicitStepCore {
 
   /// r = (M a + Q_int(q, v) − Q_ext(q)) restricted to the unknowns; the forces stay in ws().
   void CalcResidual(const VectorXd& q, const VectorXd& v, const VectorXd& a, VectorXd* r);
-  /// c_M M + c_C C + c_K K at (q, v) over the unknowns.
+  /// c_M M + c_C C + c_K K at (q, v) over the unknowns (C with Rayleigh damping; the dense modal
+  /// damping matrix is left out).
   const SparseMatrixd& CalcIterationMatrix(const VectorXd& q, const VectorXd& v,
                                            const IterationWeights& weights);
-  /// Forces at (q, v) into ws(), for the energy account.
+  /// Forces at (q, v) into ws(), damping models included.
   void CalcForces(const VectorXd& q, const VectorXd& v);
   /// Weighted RMS norm of the position change scale · Δa against positions q.
   double IncrementNorm(const VectorXd& da, const VectorXd& q, double scale) const;
@@ -41,6 +43,7 @@ class ImplicitStepCore {
 
  private:
   const Model& model_;
+  DampingModel damping_;
   Workspace ws_;
   DofMap dofs_;
   SystemMatrix iteration_matrix_;

@@ -6,8 +6,10 @@
 
 namespace ancfnet {
 
-bool CalcInitialAcceleration(const Model& model, const DofMap& dofs, Workspace& ws, State* state) {
+bool CalcInitialAcceleration(const Model& model, const DofMap& dofs, const DampingModel& damping,
+                             Workspace& ws, State* state) {
   CalcInternalForces(model, state->q, state->v, ws);
+  damping.AddForces(state->v, ws);
   CalcExternalForces(model, state->q, 1.0, ws);
   SystemMatrix mass(model, dofs);
   AssembleMassMatrix(model, ws, &mass);

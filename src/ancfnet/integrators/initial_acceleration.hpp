@@ -2,6 +2,7 @@
 /// @file The consistent initial acceleration of an implicit scheme.
 
 #include "ancfnet/assembly/dof_map.hpp"
+#include "ancfnet/forces/damping_model.hpp"
 #include "ancfnet/model/model.hpp"
 #include "ancfnet/state/state.hpp"
 #include "ancfnet/state/workspace.hpp"
@@ -9,7 +10,9 @@
 namespace ancfnet {
 
 /// Sets state->a to a₀ = M⁻¹ (Q_ext − Q_int)(q₀, v₀) on the free coordinates of `dofs` (0 on the
-/// fixed ones), with the forces left in `ws`. Returns false when the mass matrix is singular.
-bool CalcInitialAcceleration(const Model& model, const DofMap& dofs, Workspace& ws, State* state);
+/// fixed ones), Q_int with the model's damping forces, the forces left in `ws`. Returns false
+/// when the mass matrix is singular.
+bool CalcInitialAcceleration(const Model& model, const DofMap& dofs, const DampingModel& damping,
+                             Workspace& ws, State* state);
 
 }  // namespace ancfnet

@@ -11,6 +11,7 @@
 #include "ancfnet/common/types.hpp"
 #include "ancfnet/elements/ancf_cable.hpp"
 #include "ancfnet/forces/connection_law.hpp"
+#include "ancfnet/model/damping_spec.hpp"
 #include "ancfnet/model/material.hpp"
 
 namespace ancfnet {
@@ -132,6 +133,8 @@ class Model {
   /// Mean motion n (rad/s) of the target's circular orbit when the model is written in its
   /// Hill frame (forces/orbital_frame.hpp); empty for an inertial frame.
   const std::optional<double>& orbital_frame() const { return orbital_frame_; }
+  /// Rayleigh and modal damping of the whole model (forces/damping_model.hpp).
+  const DampingSpec& damping() const { return damping_; }
   /// Per coordinate: true when fixed (eliminated from the unknowns).
   const std::vector<bool>& fixed() const { return fixed_; }
   const VectorXd& initial_positions() const { return initial_positions_; }
@@ -175,6 +178,7 @@ class Model {
   std::vector<DistributedLoad> distributed_loads_;
   Vector3d gravity_ = Vector3d::Zero();
   std::optional<double> orbital_frame_;
+  DampingSpec damping_;
   std::vector<bool> fixed_;
   VectorXd initial_positions_;
   VectorXd initial_velocities_;

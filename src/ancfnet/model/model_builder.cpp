@@ -58,6 +58,35 @@ void ModelBuilder::CheckNameIsFree(const std::string& name) const {
     throw InputError(fmt::format("a point mass is already named '{}'", name));
 }
 
+void ModelBuilder::SetRayleighDamping(const RayleighDamping& damping) {
+  RequireNonNegative(damping.alpha, "Rayleigh damping α");
+  RequireNonNegative(damping.beta, "Rayleigh damping β");
+  model_.damping_.rayleigh = damping;
+}
+
+void ModelBuilder::SetModalDamping(const ModalDamping& damping) {
+  if (damping.num_modes < 1)
+    throw InputError(fmt::format("modal damping needs at least 1 mode (got {})", damping.num_modes));
+  if (damping.ratios.empty() == damping.table.empty())
+    throw InputError("modal damping needs either one ratio per mode or a table ζ(f), not both");
+  if (!damping.ratios.empty() && static_cast<int>(damping.ratios.size()) != damping.num_modes)
+    throw InputError(fmt::format("modal damping: {} modes but {} ratios", damping.num_modes,
+                                 damping.ratios.size()));
+  const auto check_ratio = [](double zeta) {
+    if (!(zeta >= 0.0 && zeta < 1.0))
+      throw InputError(fmt::format("a modal damping ratio must be in [0, 1) (got {})", zeta));
+  };
+  for (double zeta : damping.ratios) check_ratio(zeta);
+  for (std::size_t j = 0; j < damping.table.size(); ++j) {
+    const auto [f, zeta] = damping.table[j];
+    check_ratio(zeta);
+    if (!(f > 0.0 && std::isfinite(f)) || (j > 0 && !(f > damping.table[j - 1].first)))
+      throw InputError(fmt::format(
+          "modal damping table: frequencies must be positive and increasing (row {}: {} Hz)", j, f));
+  }
+  model_.damping_.modal = damping;
+}
+
 void ModelBuilder::SetOrbitalFrame(double mean_motion) {
   RequirePositive(mean_motion, "orbital mean motion");
   model_.orbital_frame_ = mean_motion;

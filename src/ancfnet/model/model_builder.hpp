@@ -50,6 +50,11 @@ class ModelBuilder {
   /// Writes the model in the Hill frame of a target on a circular orbit of mean motion n > 0
   /// (rad/s): Clohessy–Wiltshire relative dynamics (forces/orbital_frame.hpp).
   void SetOrbitalFrame(double mean_motion);
+  /// Rayleigh damping C = α M + β K₀ of the whole model (α, β ≥ 0; see FitRayleighDamping).
+  void SetRayleighDamping(const RayleighDamping& damping);
+  /// Modal damping of the lowest elastic modes (num_modes ≥ 1; ratios in [0, 1), one per mode,
+  /// or a table of ≥ 1 (frequency > 0 Hz, ratio) pairs with increasing frequencies).
+  void SetModalDamping(const ModalDamping& damping);
   /// Adds a cable; returns its index. Names must be unique and non-empty.
   Index AddCable(const CableSpec& spec);
   /// Adds a point mass m ≥ 0 (kg) at `position` (m) moving at `velocity` (m/s); returns its

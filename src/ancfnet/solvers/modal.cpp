@@ -11,6 +11,7 @@
 
 #include "ancfnet/assembly/forces.hpp"
 #include "ancfnet/common/error.hpp"
+#include "ancfnet/forces/damping_model.hpp"
 #include "ancfnet/solvers/linear_solver.hpp"
 
 namespace ancfnet {
@@ -75,7 +76,8 @@ struct LinearSystem {
   SparseMatrixd stiffness, damping, mass;
 };
 
-LinearSystem Linearise(const Model& model, const DofMap& dofs, const VectorXd& q) {
+LinearSystem Linearise(const Model& model, const DofMap& dofs, const VectorXd& q,
+                       const DampingModel* damping) {
   Workspace ws(model);
   SystemMatrix matrix(model, dofs);
   const VectorXd rest = VectorXd::Zero(model.num_dofs());
@@ -86,6 +88,7 @@ LinearSystem Linearise(const Model& model, const DofMap& dofs, const VectorXd& q
   system.stiffness = 0.5 * (matrix.matrix() + SparseMatrixd(matrix.matrix().transpose()));
   AssembleIterationMatrix(model, q, rest, {.mass = 0.0, .damping = 1.0, .stiffness = 0.0}, 1.0,
                           ws, &matrix);
+  if (damping) damping->AddRayleighJacobian(1.0, &matrix);
   system.damping = matrix.matrix();
   AssembleMassMatrix(model, ws, &matrix);
   system.mass = matrix.matrix();
@@ -93,10 +96,9 @@ LinearSystem Linearise(const Model& model, const DofMap& dofs, const VectorXd& q
 }
 
 // ζ of each mode from the eigenvalues of the first-order form of ÿ + Φᵀ C Φ ẏ + Λ y = 0.
-VectorXd CalcDampingRatios(const SparseMatrixd& damping, const MatrixXd& shapes,
-                           const VectorXd& omega, const std::vector<bool>& rigid) {
+VectorXd CalcDampingRatios(const MatrixXd& c, const VectorXd& omega,
+                           const std::vector<bool>& rigid) {
   const Eigen::Index k = omega.size();
-  const MatrixXd c = shapes.transpose() * (damping * shapes);
   VectorXd zeta = VectorXd::Zero(k);
   if (c.norm() == 0.0) {
     for (Eigen::Index i = 0; i < k; ++i) zeta[i] = rigid[i] ? std::nan("") : 0.0;
@@ -127,22 +129,18 @@ VectorXd CalcDampingRatios(const SparseMatrixd& damping, const MatrixXd& shapes,
   return zeta;
 }
 
-}  // namespace
-
-ModalResult CalcModes(const Model& model, const VectorXd& q, const ModalSettings& settings) {
-  const DofMap dofs = DofMap::FreeCoordinates(model);
+UndampedModes SolveUndamped(const Model& model, const DofMap& dofs, const LinearSystem& system,
+                            const ModalSettings& settings) {
   const Index n = dofs.num_unknowns();
   if (settings.num_modes < 1 || settings.num_modes >= n)
     throw InputError(fmt::format("modes: asked for {} of a model with {} unknowns (1 … {})",
                                  settings.num_modes, n, n - 1));
-  const LinearSystem system = Linearise(model, dofs, q);
-  ModalResult result;
+  const double scale = system.stiffness.diagonal().cwiseAbs().maxCoeff() /
+                       system.mass.diagonal().cwiseAbs().maxCoeff();
   double sigma = settings.shift;
   if (sigma == 0.0) {
     // A first pass with a shift far below any elastic eigenvalue of the model finds the lowest
     // one; the real solve then shifts to just below it, where Lanczos converges fast.
-    const double scale = system.stiffness.diagonal().cwiseAbs().maxCoeff() /
-                         system.mass.diagonal().cwiseAbs().maxCoeff();
     const Eigenpairs probe = SolveShiftInvert(system.stiffness, system.mass, 1, -1e-12 * scale,
                                               settings.tolerance);
     const double lowest = probe.converged ? std::max(probe.values[0], 0.0) : 0.0;
@@ -150,27 +148,54 @@ ModalResult CalcModes(const Model& model, const VectorXd& q, const ModalSettings
   }
   const Eigenpairs pairs =
       SolveShiftInvert(system.stiffness, system.mass, settings.num_modes, sigma, settings.tolerance);
+  UndampedModes modes;
   if (!pairs.converged) {
-    result.message = fmt::format("the eigensolver did not converge for {} modes at σ = {:.6g}",
-                                 settings.num_modes, sigma);
-    return result;
+    modes.message = fmt::format("the eigensolver did not converge for {} modes at σ = {:.6g}",
+                                settings.num_modes, sigma);
+    return modes;
   }
-  result.converged = true;
-  const Eigen::Index k = pairs.values.size();
+  modes.converged = true;
+  modes.omega_squared = pairs.values;
   // Rigid modes: ω² at the round-off of K, far below any elastic one.
-  const double rigid_limit = 1e-9 * system.stiffness.diagonal().cwiseAbs().maxCoeff() /
-                             system.mass.diagonal().cwiseAbs().maxCoeff();
-  result.omega.resize(k);
-  result.rigid.assign(k, false);
-  for (Eigen::Index i = 0; i < k; ++i) {
-    result.rigid[i] = std::abs(pairs.values[i]) <= rigid_limit;
-    result.omega[i] = result.rigid[i] ? 0.0 : std::sqrt(std::max(pairs.values[i], 0.0));
-  }
+  modes.rigid.assign(pairs.values.size(), false);
+  for (Eigen::Index i = 0; i < pairs.values.size(); ++i)
+    modes.rigid[i] = std::abs(pairs.values[i]) <= 1e-9 * scale;
+  modes.shapes = MatrixXd::Zero(model.num_dofs(), pairs.values.size());
+  for (Index u = 0; u < n; ++u) modes.shapes.row(dofs.coordinates()[u]) = pairs.vectors.row(u);
+  return modes;
+}
+
+}  // namespace
+
+UndampedModes CalcUndampedModes(const Model& model, const VectorXd& q,
+                                const ModalSettings& settings) {
+  const DofMap dofs = DofMap::FreeCoordinates(model);
+  const LinearSystem system = Linearise(model, dofs, q, nullptr);
+  return SolveUndamped(model, dofs, system, settings);
+}
+
+ModalResult CalcModes(const Model& model, const VectorXd& q, const ModalSettings& settings) {
+  const DofMap dofs = DofMap::FreeCoordinates(model);
+  const DampingModel damping(model);
+  const LinearSystem system = Linearise(model, dofs, q, &damping);
+  const UndampedModes undamped = SolveUndamped(model, dofs, system, settings);
+  ModalResult result;
+  result.message = undamped.message;
+  if (!undamped.converged) return result;
+  result.converged = true;
+  result.rigid = undamped.rigid;
+  result.omega = undamped.omega_squared.cwiseMax(0.0).cwiseSqrt();
+  for (Eigen::Index i = 0; i < result.omega.size(); ++i)
+    if (result.rigid[i]) result.omega[i] = 0.0;
   result.frequency_hz = result.omega / (2.0 * std::numbers::pi);
-  result.damping_ratio =
-      CalcDampingRatios(system.damping, pairs.vectors, result.omega, result.rigid);
-  result.shapes = MatrixXd::Zero(model.num_dofs(), k);
-  for (Index u = 0; u < n; ++u) result.shapes.row(dofs.coordinates()[u]) = pairs.vectors.row(u);
+  result.shapes = undamped.shapes;
+  // Φᵀ C Φ over the unknowns, plus the dense modal damping matrix.
+  MatrixXd free_shapes(dofs.num_unknowns(), result.shapes.cols());
+  for (Index u = 0; u < dofs.num_unknowns(); ++u)
+    free_shapes.row(u) = result.shapes.row(dofs.coordinates()[u]);
+  const MatrixXd projected = free_shapes.transpose() * (system.damping * free_shapes) +
+                             damping.ProjectModal(result.shapes);
+  result.damping_ratio = CalcDampingRatios(projected, result.omega, result.rigid);
   return result;
 }
 

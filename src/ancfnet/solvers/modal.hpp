@@ -39,6 +39,19 @@ struct ModalResult {
   std::vector<bool> rigid;
 };
 
+/// The undamped modes alone: ω² ascending (rigid ones 0), M-orthonormal shapes over all
+/// coordinates (zero on the fixed ones), rigid flags. Used by CalcModes and by the modal damping
+/// matrix (forces/damping_model.hpp).
+struct UndampedModes {
+  bool converged = false;
+  std::string message;
+  VectorXd omega_squared;
+  MatrixXd shapes;
+  std::vector<bool> rigid;
+};
+UndampedModes CalcUndampedModes(const Model& model, const VectorXd& q,
+                                const ModalSettings& settings);
+
 /// Linearises the model about configuration `q` at rest: K = ∂(Q_int − Q_ext)/∂q (symmetrised),
 /// C = ∂Q_int/∂q̇, M the mass matrix, over the free coordinates, and returns the lowest modes.
 /// Throws InputError for k out of range. A failed eigen solve is reported in the result.
