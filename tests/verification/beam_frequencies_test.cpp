@@ -12,6 +12,7 @@
 #include "ancfnet/assembly/forces.hpp"
 #include "ancfnet/model/model_builder.hpp"
 #include "ancfnet/solvers/modal.hpp"
+#include "ancfnet/solvers/static_solver.hpp"
 
 namespace ancfnet {
 namespace {
@@ -215,6 +216,54 @@ TEST(ModalAnalysis, KelvinVoigtBendingDampingRatios) {
   for (int i = 0; i < 8; ++i)
     EXPECT_NEAR(modes.damping_ratio[i], 0.5 * modes.omega[i] * tau, 1e-6 * modes.omega[i] * tau)
         << "mode " << i + 1;
+}
+
+}  // namespace
+}  // namespace ancfnet
+
+namespace ancfnet {
+namespace {
+
+// Linearised about a static equilibrium: a string pinned at one end and pulled at the other by a
+// 10 N axial force (its end free only along the axis). Solving N λ = T with the Green strain law
+// N = EA (λ² − 1)/2 gives the tension; the transverse modes are then f_n = n/(2 L₀) √(N/ρA).
+TEST(ModalAnalysis, AboutAStaticEquilibriumUnderTension) {
+  const Material wire{.youngs_modulus = 1e9, .density = 1000.0};
+  CableProperties p = MakeCableProperties(wire, MakeCircleSection(0.001));
+  p.bending_stiffness *= 1e-6;
+  const double length = 2.0, pull = 10.0;
+  ModelBuilder builder;
+  builder.AddCable({.name = "string",
+                    .start = Vector3d::Zero(),
+                    .end = Vector3d(length, 0, 0),
+                    .num_elements = 40,
+                    .properties = p});
+  builder.AddPin({"string", 0.0});
+  builder.FixCoordinates({"string", 1.0}, {false, true, true, false, false, false});
+  builder.AddPointForce({"string", 1.0}, Vector3d(pull, 0, 0));
+  const Model model = builder.Build();
+  State state = MakeInitialState(model);
+  ASSERT_TRUE(SolveStatic(model, {}, [](const State&, const EnergyAccount&) {}, &state).completed);
+  // λ³ − λ = 2T/EA by Newton.
+  double stretch = 1.0;
+  for (int i = 0; i < 50; ++i)
+    stretch -= (stretch * stretch * stretch - stretch - 2 * pull / p.axial_stiffness) /
+               (3 * stretch * stretch - 1);
+  const double tension = pull / stretch;  // N (second Piola–Kirchhoff)
+  ASSERT_NEAR(state.q[model.NodePositionDof(model.num_nodes() - 1)], stretch * length, 1e-9);
+  const ModalResult modes = CalcModes(model, state.q, {.num_modes = 10});
+  ASSERT_TRUE(modes.converged) << modes.message;
+  // The first four transverse pairs (the first axial mode, near (1/4L) √(EA/ρA) = 125 Hz, comes
+  // before the fifth).
+  for (int n = 1; n <= 4; ++n) {
+    const double exact = n / (2.0 * length) * std::sqrt(tension / p.mass_per_length);
+    EXPECT_NEAR(modes.frequency_hz[2 * n - 2] / exact, 1.0, 5e-3) << "mode " << n;
+    EXPECT_NEAR(modes.frequency_hz[2 * n - 1] / exact, 1.0, 5e-3) << "mode " << n;
+  }
+  // About the unloaded reference the string is slack: no transverse stiffness but bending.
+  const ModalResult slack = CalcModes(model, model.initial_positions(), {.num_modes = 2});
+  ASSERT_TRUE(slack.converged) << slack.message;
+  EXPECT_LT(slack.frequency_hz[0], 0.1 * modes.frequency_hz[0]);
 }
 
 }  // namespace

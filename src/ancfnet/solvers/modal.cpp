@@ -53,11 +53,12 @@ struct Eigenpairs {
 };
 
 Eigenpairs SolveShiftInvert(const SparseMatrixd& k, const SparseMatrixd& m, int num_modes,
-                            double sigma, double tolerance) {
+                            double sigma, double tolerance, int subspace_factor = 1) {
   ShiftInvertOperator op(k, m);
   Spectra::SparseSymMatProd<double> m_op(m);
   const Eigen::Index n = k.rows();
-  const Eigen::Index ncv = std::min<Eigen::Index>(n, std::max(2 * num_modes + 1, 20));
+  const Eigen::Index ncv =
+      std::min<Eigen::Index>(n, subspace_factor * std::max(2 * num_modes + 1, 20));
   Spectra::SymGEigsShiftSolver<ShiftInvertOperator, Spectra::SparseSymMatProd<double>,
                                Spectra::GEigsMode::ShiftInvert>
       solver(op, m_op, num_modes, ncv, sigma);
@@ -146,8 +147,16 @@ UndampedModes SolveUndamped(const Model& model, const DofMap& dofs, const Linear
     const double lowest = probe.converged ? std::max(probe.values[0], 0.0) : 0.0;
     sigma = lowest > 1e-10 * scale ? -0.5 * lowest : -1e-6 * scale;
   }
-  const Eigenpairs pairs =
-      SolveShiftInvert(system.stiffness, system.mass, settings.num_modes, sigma, settings.tolerance);
+  // Clustered eigenvalues (a slack rope's or net's near-mechanisms, far below |σ|) are poorly
+  // separated by the transformation: retry with a larger Krylov subspace, then with the shift
+  // moved towards them.
+  Eigenpairs pairs;
+  for (const auto& [factor, move] : {std::pair{1, 1.0}, {3, 1.0}, {3, 1e-4}, {3, 1e-8}}) {
+    if (settings.shift != 0.0 && move != 1.0) break;  // the user's shift stays
+    pairs = SolveShiftInvert(system.stiffness, system.mass, settings.num_modes, sigma * move,
+                             settings.tolerance, factor);
+    if (pairs.converged) break;
+  }
   UndampedModes modes;
   if (!pairs.converged) {
     modes.message = fmt::format("the eigensolver did not converge for {} modes at σ = {:.6g}",
