@@ -1,4 +1,5 @@
-// The ancfnet command-line tool: run, static, check and modal for a scene file.
+// The ancfnet command-line tool: run, static, check and modal for a scene file; identify
+// modes in a probes.csv file.
 // Exit codes: 0 success, 2 invalid input (one line on stderr; also a model too large for the
 // memory), 3 the solver gave up (outputs written so far are kept and summary.json says why),
 // 1 an unexpected internal error (a bug).
@@ -14,6 +15,7 @@
 #include "ancfnet/io/scene_loader.hpp"
 #include "ancfnet/run/run_scene.hpp"
 #include "modal_command.hpp"
+#include "identify_command.hpp"
 #include "scene_report.hpp"
 
 namespace {
@@ -71,6 +73,8 @@ int main(int argc, char** argv) {
   check->add_option("scene", scene_file, "Scene file (YAML)")->required();
   ancfnet::ModalCommand modal;
   ancfnet::AddModalCommand(app, &modal);
+  ancfnet::IdentifyArguments identify_arguments;
+  CLI::App* identify = ancfnet::AddIdentifyCommand(app, &identify_arguments);
 
   try {
     app.parse(argc, argv);
@@ -84,6 +88,7 @@ int main(int argc, char** argv) {
       return 0;
     }
     if (*modal.command) return ancfnet::RunModalCommand(modal);
+    if (*identify) return ancfnet::RunIdentifyCommand(identify_arguments, stdout);
     const auto type = *run_static ? std::optional(ancfnet::AnalysisType::kStatic) : std::nullopt;
     return RunCommand(scene_file, output_dir, quiet, type);
   } catch (const ancfnet::InputError& e) {
