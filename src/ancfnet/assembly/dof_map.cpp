@@ -6,8 +6,9 @@ namespace ancfnet {
 
 DofMap::DofMap(const Model& model, bool eliminate_fixed)
     : coordinate_to_unknown_(model.num_dofs(), -1) {
+  for (const PrescribedBlock& block : model.prescribed())
+    for (int k = 0; k < 3; ++k) prescribed_dofs_.push_back(block.dof + k);
   for (Index i = 0; i < model.num_dofs(); ++i) {
-    if (model.fixed()[i] && model.initial_velocities()[i] != 0.0) moving_dofs_.push_back(i);
     if (eliminate_fixed && model.fixed()[i]) continue;
     coordinate_to_unknown_[i] = static_cast<Index>(free_dofs_.size());
     free_dofs_.push_back(i);
@@ -25,11 +26,6 @@ void DofMap::Restrict(const VectorXd& full, VectorXd* unknowns) const {
 
 void DofMap::AddExpanded(const VectorXd& unknowns, double scale, VectorXd* full) const {
   for (Index i = 0; i < num_unknowns(); ++i) (*full)[free_dofs_[i]] += scale * unknowns[i];
-}
-
-void DofMap::AdvanceMoving(const VectorXd& q_start, const VectorXd& v, double h,
-                           VectorXd* q) const {
-  for (Index i : moving_dofs_) (*q)[i] = q_start[i] + h * v[i];
 }
 
 }  // namespace ancfnet

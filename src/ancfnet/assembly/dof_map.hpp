@@ -24,10 +24,8 @@ class DofMap {
   Index unknown(Index coordinate) const { return coordinate_to_unknown_[coordinate]; }
   /// Global coordinate of each unknown.
   const std::vector<Index>& coordinates() const { return free_dofs_; }
-  /// Fixed coordinates with a prescribed constant velocity (a moving point), q(t) = q₀ + v₀ t.
-  const std::vector<Index>& moving_coordinates() const { return moving_dofs_; }
-  /// q[i] = q_start[i] + h v[i] on the moving fixed coordinates (their v is constant).
-  void AdvanceMoving(const VectorXd& q_start, const VectorXd& v, double h, VectorXd* q) const;
+  /// Fixed coordinates that move (model/prescribed_motion.hpp).
+  const std::vector<Index>& prescribed_coordinates() const { return prescribed_dofs_; }
 
   /// unknowns = full[coordinates()] (no allocation when `unknowns` has the right size).
   void Restrict(const VectorXd& full, VectorXd* unknowns) const;
@@ -38,7 +36,7 @@ class DofMap {
   DofMap(const Model& model, bool eliminate_fixed);
   std::vector<Index> coordinate_to_unknown_;
   std::vector<Index> free_dofs_;
-  std::vector<Index> moving_dofs_;
+  std::vector<Index> prescribed_dofs_;
 };
 
 }  // namespace ancfnet

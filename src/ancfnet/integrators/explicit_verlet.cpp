@@ -36,6 +36,7 @@ StepOutcome ExplicitVerletIntegrator::Step(double h, State* state) {
   previous_ = *state;
   state->v += 0.5 * h * state->a;
   state->q += h * state->v;
+  ApplyPrescribedMotion(model_.prescribed(), state->t + h, &state->q, &state->v, nullptr);
   CalcAcceleration(state->q, state->v, &state->a);
   state->v += 0.5 * h * state->a;
   state->t += h;

@@ -54,7 +54,7 @@ class GeneralizedAlphaIntegrator::StepProblem {
                     h_ * h_ * ((0.5 - c.beta) * a_bar[i] + c.beta * a_bar_next);
       state_.v[i] = prev.v[i] + h_ * ((1.0 - c.gamma) * a_bar[i] + c.gamma * a_bar_next);
     }
-    core_.dofs().AdvanceMoving(prev.q, prev.v, h_, &state_.q);
+    ApplyPrescribedMotion(core_.model().prescribed(), state_.t, &state_.q, &state_.v, &state_.a);
   }
 
   void CalcResidual(VectorXd* r) { core_.CalcResidual(state_.q, state_.v, state_.a, r); }

@@ -24,7 +24,14 @@ class ImplicitMidpointIntegrator::StepProblem {
       mid_.v[i] = prev.v[i] + 0.5 * h_ * state_.a[i];
       mid_.q[i] = prev.q[i] + 0.5 * h_ * prev.v[i] + 0.25 * h_ * h_ * state_.a[i];
     }
-    core_.dofs().AdvanceMoving(prev.q, prev.v, 0.5 * h_, &mid_.q);
+    // Prescribed coordinates: their values at the end go into the state, the means of both ends
+    // into the midpoint, and (v_{n+1} − v_n)/h into the mean acceleration.
+    ApplyPrescribedMotion(core_.model().prescribed(), prev.t + h_, &state_.q, &state_.v, nullptr);
+    for (Index i : core_.dofs().prescribed_coordinates()) {
+      mid_.q[i] = 0.5 * (prev.q[i] + state_.q[i]);
+      mid_.v[i] = 0.5 * (prev.v[i] + state_.v[i]);
+      state_.a[i] = (state_.v[i] - prev.v[i]) / h_;
+    }
   }
 
   void CalcResidual(VectorXd* r) { core_.CalcResidual(mid_.q, mid_.v, state_.a, r); }
@@ -73,6 +80,8 @@ StepOutcome ImplicitMidpointIntegrator::Step(double h, State* state) {
                             .failure = result.failure};
   const State& previous = core_.previous();
   if (!result.converged) {
+    state->q = previous.q;
+    state->v = previous.v;
     state->a = previous.a;
     return outcome;
   }
@@ -82,7 +91,6 @@ StepOutcome ImplicitMidpointIntegrator::Step(double h, State* state) {
     state->q[i] = 2.0 * midpoint_.q[i] - previous.q[i];
     state->v[i] = 2.0 * midpoint_.v[i] - previous.v[i];
   }
-  core_.dofs().AdvanceMoving(previous.q, previous.v, h, &state->q);
   // Forces at the converged midpoint, for the energy account.
   core_.CalcForces(midpoint_.q, midpoint_.v);
   return outcome;

@@ -38,6 +38,7 @@ class ImplicitStepCore {
   double IncrementNorm(const VectorXd& da, const VectorXd& q, double scale) const;
 
   const DofMap& dofs() const { return dofs_; }
+  const Model& model() const { return model_; }
   const State& previous() const { return previous_; }
   const Workspace& workspace() const { return ws_; }
 

@@ -13,6 +13,7 @@
 #include "ancfnet/forces/connection_law.hpp"
 #include "ancfnet/model/damping_spec.hpp"
 #include "ancfnet/model/material.hpp"
+#include "ancfnet/model/prescribed_motion.hpp"
 
 namespace ancfnet {
 
@@ -135,6 +136,8 @@ class Model {
   const std::optional<double>& orbital_frame() const { return orbital_frame_; }
   /// Rayleigh and modal damping of the whole model (forces/damping_model.hpp).
   const DampingSpec& damping() const { return damping_; }
+  /// Fixed coordinates that move: chasers, hubs (model/prescribed_motion.hpp).
+  const std::vector<PrescribedBlock>& prescribed() const { return prescribed_; }
   /// Per coordinate: true when fixed (eliminated from the unknowns).
   const std::vector<bool>& fixed() const { return fixed_; }
   const VectorXd& initial_positions() const { return initial_positions_; }
@@ -180,6 +183,7 @@ class Model {
   std::optional<double> orbital_frame_;
   DampingSpec damping_;
   std::vector<bool> fixed_;
+  std::vector<PrescribedBlock> prescribed_;
   VectorXd initial_positions_;
   VectorXd initial_velocities_;
 };

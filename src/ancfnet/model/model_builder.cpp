@@ -217,7 +217,35 @@ void ModelBuilder::FixPointMass(const std::string& name) {
 void ModelBuilder::MovePointMass(const std::string& name, const Vector3d& velocity) {
   RequireFinite(velocity, "velocity of a moving point mass");
   FixPointMass(name);
-  moving_.emplace_back(model_.point_masses_[model_.FindPointMass(name)].dof, velocity);
+  const Index dof = model_.point_masses_[model_.FindPointMass(name)].dof;
+  PrescribedBlock block;
+  block.kind = PrescribedBlock::Kind::kTranslation;
+  block.dof = dof;
+  block.initial = model_.initial_positions_.segment<3>(dof);
+  block.velocity = velocity;
+  model_.prescribed_.push_back(block);
+}
+
+void ModelBuilder::AddRotatingClamp(const CablePointRef& at, const Vector3d& axis,
+                                    const Vector3d& center, const AngleProfile& angle) {
+  RequireFinite(axis, "hub axis");
+  RequireFinite(center, "hub centre");
+  if (!(axis.norm() > 0.0)) throw InputError("a hub's axis must be a non-zero vector");
+  if (!std::isfinite(angle.rate)) throw InputError("a hub's rate must be finite");
+  if (angle.kind == AngleProfile::Kind::kSpinUp) RequirePositive(angle.ramp_time, "spin-up time");
+  AddClamp(at);
+  const CableNode& node = model_.nodes_[LocateNode(at)];
+  for (const auto& [dof, direction] : {std::pair{node.position_dof, false}, {node.slope_dof, true}}) {
+    PrescribedBlock block;
+    block.kind = PrescribedBlock::Kind::kRotation;
+    block.dof = dof;
+    block.initial = model_.initial_positions_.segment<3>(dof);
+    block.axis = axis.normalized();
+    block.center = center;
+    block.is_direction = direction;
+    block.angle = angle;
+    model_.prescribed_.push_back(block);
+  }
 }
 
 void ModelBuilder::AddSpringDamper(const std::string& name, const CablePointRef& first,
@@ -308,7 +336,7 @@ Model ModelBuilder::Build() const {
   // A fixed coordinate does not move, unless it belongs to a moving point mass.
   for (Index i = 0; i < model.num_dofs(); ++i)
     if (model.fixed_[i]) model.initial_velocities_[i] = 0.0;
-  for (const auto& [dof, velocity] : moving_) model.initial_velocities_.segment<3>(dof) = velocity;
+  ApplyPrescribedMotion(model.prescribed_, 0.0, nullptr, &model.initial_velocities_, nullptr);
   return model;
 }
 

@@ -81,6 +81,11 @@ class ModelBuilder {
   void AddClamp(const CablePointRef& at);
   /// Fixes the position of the node at `at`; the slope stays free.
   void AddPin(const CablePointRef& at);
+  /// Clamps the node at `at` to a hub turning by θ(t) about the axis through `center` along
+  /// `axis` (normalised; non-zero): its position and slope are prescribed,
+  /// r(t) = c + R(θ) (r₀ − c), r'(t) = R(θ) r'₀ (model/prescribed_motion.hpp).
+  void AddRotatingClamp(const CablePointRef& at, const Vector3d& axis, const Vector3d& center,
+                        const AngleProfile& angle);
   /// Fixes the chosen coordinates of the node at `at`.
   void FixCoordinates(const CablePointRef& at, const CoordinateMask& mask);
   /// Force fixed in space (N) at any material point.
@@ -106,7 +111,6 @@ class ModelBuilder {
   // Position coordinates of a cable end: the named knot's, or new ones at `position`.
   Index EndPositionDof(const std::string& knot, const Vector3d& position, const char* which);
   Model model_;
-  std::vector<std::pair<Index, Vector3d>> moving_;  // first coordinate, velocity
 };
 
 }  // namespace ancfnet
