@@ -15,6 +15,7 @@
 #include "ancfnet/io/scene_loader.hpp"
 #include "ancfnet/run/run_scene.hpp"
 #include "modal_command.hpp"
+#include "assumed_modes_command.hpp"
 #include "identify_command.hpp"
 #include "scene_report.hpp"
 
@@ -75,6 +76,8 @@ int main(int argc, char** argv) {
   ancfnet::AddModalCommand(app, &modal);
   ancfnet::IdentifyArguments identify_arguments;
   CLI::App* identify = ancfnet::AddIdentifyCommand(app, &identify_arguments);
+  ancfnet::AssumedModesArguments assumed_modes;
+  ancfnet::AddAssumedModesCommand(app, &assumed_modes);
 
   try {
     app.parse(argc, argv);
@@ -89,6 +92,7 @@ int main(int argc, char** argv) {
     }
     if (*modal.command) return ancfnet::RunModalCommand(modal);
     if (*identify) return ancfnet::RunIdentifyCommand(identify_arguments, stdout);
+    if (*assumed_modes.command) return ancfnet::RunAssumedModesCommand(assumed_modes);
     const auto type = *run_static ? std::optional(ancfnet::AnalysisType::kStatic) : std::nullopt;
     return RunCommand(scene_file, output_dir, quiet, type);
   } catch (const ancfnet::InputError& e) {

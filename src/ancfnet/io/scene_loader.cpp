@@ -181,17 +181,40 @@ void ReadCable(const YamlValue& item, const Library& library, ModelBuilder* buil
   if (auto v = map.Find("initial_velocity")) ReadInitialVelocity(*v, spec.name, builder);
 }
 
+// angle: {type: constant_rate, rate: Ω} or {type: spin_up, rate: Ω, time: T} (rad/s, s).
+AngleProfile ReadAngleProfile(const YamlValue& value) {
+  const YamlMap map = value.AsMap();
+  AngleProfile angle;
+  const bool spin_up = map.Get("type").AsChoice({"constant_rate", "spin_up"}) == 1;
+  map.CheckKeys(spin_up ? std::vector<std::string_view>{"type", "rate", "time"}
+                        : std::vector<std::string_view>{"type", "rate"});
+  angle.rate = map.Get("rate").AsNumberIn(-1e6, 1e6);
+  if (spin_up) {
+    angle.kind = AngleProfile::Kind::kSpinUp;
+    angle.ramp_time = map.Get("time").AsPositive();
+  }
+  return angle;
+}
+
 void ReadConstraint(const YamlValue& item, ModelBuilder* builder) {
   const YamlMap map = item.AsMap();
-  const std::size_t type = map.Get("type").AsChoice({"clamp", "pin", "fix"});
+  const std::size_t type = map.Get("type").AsChoice({"clamp", "pin", "fix", "rotating_clamp"});
   if (type == 2) {
     map.CheckKeys({"type", "at", "coordinates"});
+  } else if (type == 3) {
+    map.CheckKeys({"type", "at", "axis", "center", "angle"});
   } else {
     map.CheckKeys({"type", "at"});
   }
   const YamlValue at = map.Get("at");
   const CablePointRef point = ReadPoint(at);
   if (type == 0) return at.Locate([&] { builder->AddClamp(point); });
+  if (type == 3) {
+    const Vector3d axis = map.Find("axis") ? map.Get("axis").AsVector3() : Vector3d::UnitZ();
+    const Vector3d center = map.Find("center") ? map.Get("center").AsVector3() : Vector3d::Zero();
+    const AngleProfile angle = ReadAngleProfile(map.Get("angle"));
+    return item.Locate([&] { builder->AddRotatingClamp(point, axis, center, angle); });
+  }
   if (type == 1) return at.Locate([&] { builder->AddPin(point); });
   CoordinateMask mask{};
   for (const YamlValue& coordinate : map.Get("coordinates").AsList(/*non_empty=*/true))
