@@ -415,7 +415,7 @@ const BadScene kBadScenes[] = {
      "scene.yaml:14:23: s = 0.3 on cable 'beam' is not at a node (nodes are at multiples of "
      "1/16) (key 'at')"},
     {"ConstraintTypeSuggests", Cantilever("type: clamp", "type: clmap"),
-     "scene.yaml:14:12: expected one of clamp, pin, fix, got 'clmap'; did you mean 'clamp'? "
+     "scene.yaml:14:12: expected one of clamp, pin, fix, rotating_clamp, got 'clmap'; did you mean 'clamp'? "
      "(key 'type')"},
     {"FixUnknownCoordinate", Cantilever("{type: clamp, at: beam.start}",
                                         "{type: fix, at: beam.start, coordinates: [x, w]}"),
