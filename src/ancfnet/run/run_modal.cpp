@@ -8,6 +8,7 @@
 
 #include "ancfnet/assembly/dof_map.hpp"
 #include "ancfnet/common/error.hpp"
+#include "ancfnet/io/output_directory.hpp"
 #include "ancfnet/io/vtk_writer.hpp"
 #include "ancfnet/solvers/static_solver.hpp"
 
@@ -74,11 +75,7 @@ void WriteModesJson(const std::filesystem::path& path, const ModalResult& modes,
 }  // namespace
 
 ModalResult RunModal(const Scene& scene, const ModalOptions& options) {
-  std::error_code error;
-  std::filesystem::create_directories(options.output_dir, error);
-  if (error)
-    throw InputError(fmt::format("cannot create output directory '{}': {}",
-                                 options.output_dir.string(), error.message()));
+  CreateOutputDirectory(options.output_dir);
   const Model& model = scene.model;
   const VectorXd q = LinearisationPoint(scene, options.about);
   const ModalResult modes = CalcModes(model, q, options.settings);

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "ancfnet/common/error.hpp"
+#include "ancfnet/io/output_directory.hpp"
 #include "ancfnet/io/probe_csv_writer.hpp"
 #include "ancfnet/io/vtk_writer.hpp"
 #include "ancfnet/run/progress_reporter.hpp"
@@ -60,11 +61,7 @@ class OutputWriters {
 }  // namespace
 
 RunSummary RunScene(const Scene& scene, const RunOptions& options) {
-  std::error_code error;
-  std::filesystem::create_directories(options.output_dir, error);
-  if (error)
-    throw InputError(fmt::format("cannot create output directory '{}': {}",
-                                 options.output_dir.string(), error.message()));
+  CreateOutputDirectory(options.output_dir);
   const AnalysisType type = options.analysis_type.value_or(scene.analysis.type);
   const bool is_static = type == AnalysisType::kStatic;
   OutputWriters writers(scene, options.output_dir);
