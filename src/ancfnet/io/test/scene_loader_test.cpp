@@ -281,6 +281,15 @@ TEST(SceneLoaderTest, LoadsTheExampleFiles) {
     EXPECT_EQ(scene.source, file.string());
     EXPECT_FALSE(scene.probes.empty());
   }
+  // Every example a user may start from is a valid scene.
+  int examples = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(SourceDir() / "examples")) {
+    if (entry.path().extension() != ".yaml") continue;
+    SCOPED_TRACE(entry.path().string());
+    EXPECT_NO_THROW(LoadScene(entry.path()));
+    ++examples;
+  }
+  EXPECT_GE(examples, 7);
   const Scene statics = LoadScene(SourceDir() / "examples" / "cantilever_static.yaml");
   EXPECT_EQ(statics.model.num_dofs(), 102);
   EXPECT_EQ(statics.analysis.statics.load_steps, 10);
