@@ -28,12 +28,13 @@ void AddAssumedModesCommand(CLI::App& app, AssumedModesArguments* a) {
 }
 
 int RunAssumedModesCommand(const AssumedModesArguments& a) {
-  const AngleProfile hub{.kind = AngleProfile::Kind::kSpinUp, .rate = a.rate,
-                         .ramp_time = a.ramp_time};
-  const AssumedModesResponse r = SimulateAssumedModes(
-      {.length = a.length, .bending_stiffness = a.bending_stiffness,
-       .mass_per_length = a.mass_per_length, .num_modes = a.modes},
-      hub, a.end_time, a.time_step, 1e3 * a.length);
+  const AngleProfile hub{
+      .kind = AngleProfile::Kind::kSpinUp, .rate = a.rate, .ramp_time = a.ramp_time};
+  const AssumedModesResponse r = SimulateAssumedModes({.length = a.length,
+                                                       .bending_stiffness = a.bending_stiffness,
+                                                       .mass_per_length = a.mass_per_length,
+                                                       .num_modes = a.modes},
+                                                      hub, a.end_time, a.time_step, 1e3 * a.length);
   std::ofstream file(a.output);
   file << "time,tip_deflection\n";
   for (std::size_t i = 0; i < r.time.size(); ++i)
@@ -43,8 +44,8 @@ int RunAssumedModesCommand(const AssumedModesArguments& a) {
     fmt::print("assumed modes (ω₁ = {:.4g} rad/s): diverged, |v(L)| > {} m at t = {:.4g} s\n",
                r.omega[0], 1e3 * a.length, r.time.back());
   else
-    fmt::print("assumed modes (ω₁ = {:.4g} rad/s): {} samples in {}\n", r.omega[0],
-               r.time.size(), a.output);
+    fmt::print("assumed modes (ω₁ = {:.4g} rad/s): {} samples in {}\n", r.omega[0], r.time.size(),
+               a.output);
   return 0;
 }
 

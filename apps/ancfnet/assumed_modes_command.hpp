@@ -3,7 +3,6 @@
 // [--step h] -o FILE.csv`: the linear floating-frame comparison model of a spin-up.
 
 #include <CLI/CLI.hpp>
-
 #include <string>
 
 namespace ancfnet {

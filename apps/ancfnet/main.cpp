@@ -4,9 +4,9 @@
 // memory), 3 the solver gave up (outputs written so far are kept and summary.json says why),
 // 1 an unexpected internal error (a bug).
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
 #include <new>
@@ -14,9 +14,9 @@
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/io/scene_loader.hpp"
 #include "ancfnet/run/run_scene.hpp"
-#include "modal_command.hpp"
 #include "assumed_modes_command.hpp"
 #include "identify_command.hpp"
+#include "modal_command.hpp"
 #include "scene_report.hpp"
 
 namespace {
@@ -46,10 +46,11 @@ int RunCommand(const std::string& scene_file, const std::string& output_dir, boo
     return kExitSolverFailure;
   }
   if (!quiet)
-    fmt::print("{} analysis completed: {} steps, {} Newton iterations, {} Jacobian updates, "
-               "{:.3f} s; results in {}\n",
-               summary.analysis, summary.steps, summary.newton_iterations,
-               summary.jacobian_updates, summary.wall_time_s, options.output_dir.string());
+    fmt::print(
+        "{} analysis completed: {} steps, {} Newton iterations, {} Jacobian updates, "
+        "{:.3f} s; results in {}\n",
+        summary.analysis, summary.steps, summary.newton_iterations, summary.jacobian_updates,
+        summary.wall_time_s, options.output_dir.string());
   return 0;
 }
 
@@ -66,8 +67,7 @@ int main(int argc, char** argv) {
   CLI::App* run_static = app.add_subcommand("static", "Solve the static equilibrium of a scene");
   for (CLI::App* command : {run, run_static}) {
     command->add_option("scene", scene_file, "Scene file (YAML)")->required();
-    command->add_option("-o,--output", output_dir,
-                        "Output directory (default: out/<scene name>)");
+    command->add_option("-o,--output", output_dir, "Output directory (default: out/<scene name>)");
     command->add_flag("-q,--quiet", quiet, "No progress line and no closing message");
   }
   CLI::App* check = app.add_subcommand("check", "Validate a scene file and describe the model");

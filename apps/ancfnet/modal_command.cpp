@@ -15,7 +15,8 @@ void AddModalCommand(CLI::App& app, ModalCommand* options) {
       "modal", "Natural frequencies, damping ratios and mode shapes of the linearised scene");
   CLI::App* c = options->command;
   c->add_option("scene", options->scene_file, "Scene file (YAML)")->required();
-  c->add_option("-o,--output", options->output_dir, "Output directory (default: out/<scene>_modes)");
+  c->add_option("-o,--output", options->output_dir,
+                "Output directory (default: out/<scene>_modes)");
   c->add_option("--modes", options->modes, "Number of modes (the lowest)")
       ->check(CLI::PositiveNumber);
   c->add_option("--about", options->about,
@@ -34,14 +35,14 @@ int RunModalCommand(const ModalCommand& options) {
                        : std::filesystem::path(options.output_dir);
   run.settings.num_modes = options.modes;
   run.settings.shift = options.shift;
-  run.about = options.about == "equilibrium" ? Linearisation::kEquilibrium
-                                             : Linearisation::kReference;
+  run.about =
+      options.about == "equilibrium" ? Linearisation::kEquilibrium : Linearisation::kReference;
   const ModalResult modes = RunModal(scene, run);
   fmt::print("{:>5} {:>14} {:>14} {:>10}\n", "mode", "f [Hz]", "ω [rad/s]", "ζ [%]");
   for (Eigen::Index i = 0; i < modes.omega.size(); ++i) {
     const double zeta = modes.damping_ratio[i];
-    fmt::print("{:>5} {:>14.6g} {:>14.6g} {:>10}{}\n", i + 1, modes.frequency_hz[i],
-               modes.omega[i], std::isfinite(zeta) ? fmt::format("{:.4f}", 100.0 * zeta) : "—",
+    fmt::print("{:>5} {:>14.6g} {:>14.6g} {:>10}{}\n", i + 1, modes.frequency_hz[i], modes.omega[i],
+               std::isfinite(zeta) ? fmt::format("{:.4f}", 100.0 * zeta) : "—",
                modes.rigid[i] ? "  (rigid)" : "");
   }
   fmt::print("modes.json and modes.pvd in {}\n", run.output_dir.string());

@@ -2,7 +2,6 @@
 // `ancfnet modal SCENE --modes K [-o DIR] [--about reference|equilibrium] [--shift S]`.
 
 #include <CLI/CLI.hpp>
-
 #include <string>
 
 namespace ancfnet {

@@ -39,7 +39,8 @@ void PrintSceneReport(const Scene& scene, std::FILE* out) {
   for (std::size_t c = 0; c < model.cables().size(); ++c) {
     if (in_net[c]) continue;
     const Cable& cable = model.cables()[c];
-    fmt::print(out, "  cable {}: {} elements, length {:.6g} m, EA {:.6g} N, EI {:.6g} N m², "
+    fmt::print(out,
+               "  cable {}: {} elements, length {:.6g} m, EA {:.6g} N, EI {:.6g} N m², "
                "ρA {:.6g} kg/m{}\n",
                cable.name, cable.num_elements, cable.length, cable.properties.axial_stiffness,
                cable.properties.bending_stiffness, cable.properties.mass_per_length,
@@ -47,10 +48,10 @@ void PrintSceneReport(const Scene& scene, std::FILE* out) {
   }
   fmt::print(out, "  {} coordinates, {} fixed, {} unknowns; total mass {:.6g} kg\n",
              model.num_dofs(), fixed, model.num_dofs() - fixed, model.total_mass());
-  fmt::print(out, "  loads: {} point forces, {} point moments, {} distributed; gravity [{}, {}, {}]\n",
-             model.point_forces().size(), model.point_moments().size(),
-             model.distributed_loads().size(), model.gravity().x(), model.gravity().y(),
-             model.gravity().z());
+  fmt::print(
+      out, "  loads: {} point forces, {} point moments, {} distributed; gravity [{}, {}, {}]\n",
+      model.point_forces().size(), model.point_moments().size(), model.distributed_loads().size(),
+      model.gravity().x(), model.gravity().y(), model.gravity().z());
   const DampingSpec& damping = model.damping();
   if (damping.rayleigh.alpha != 0.0 || damping.rayleigh.beta != 0.0)
     fmt::print(out, "  Rayleigh damping: α = {:.6g} 1/s, β = {:.6g} s\n", damping.rayleigh.alpha,

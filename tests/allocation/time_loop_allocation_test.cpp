@@ -9,10 +9,10 @@
 #include <cstddef>
 #include <cstdlib>
 
+#include "../verification/verification_scenes.hpp"
 #include "ancfnet/analysis/energy_tracker.hpp"
 #include "ancfnet/integrators/explicit_verlet.hpp"
 #include "ancfnet/integrators/generalized_alpha.hpp"
-#include "../verification/verification_scenes.hpp"
 
 extern "C" {
 void* __libc_malloc(std::size_t size);

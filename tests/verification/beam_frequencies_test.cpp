@@ -107,9 +107,12 @@ INSTANTIATE_TEST_SUITE_P(Supports, BeamFrequencies,
                                            Supports::kFreeFree),
                          [](const auto& info) {
                            switch (info.param) {
-                             case Supports::kClampedFree: return "ClampedFree";
-                             case Supports::kPinnedPinned: return "PinnedPinned";
-                             case Supports::kFreeFree: return "FreeFree";
+                             case Supports::kClampedFree:
+                               return "ClampedFree";
+                             case Supports::kPinnedPinned:
+                               return "PinnedPinned";
+                             case Supports::kFreeFree:
+                               return "FreeFree";
                            }
                            return "";
                          });
@@ -243,7 +246,9 @@ TEST(ModalAnalysis, AboutAStaticEquilibriumUnderTension) {
   builder.AddPointForce({"string", 1.0}, Vector3d(pull, 0, 0));
   const Model model = builder.Build();
   State state = MakeInitialState(model);
-  ASSERT_TRUE(SolveStatic(model, {}, [](const State&, const EnergyAccount&) {}, &state).completed);
+  ASSERT_TRUE(SolveStatic(
+                  model, {}, [](const State&, const EnergyAccount&) {}, &state)
+                  .completed);
   // λ³ − λ = 2T/EA by Newton.
   double stretch = 1.0;
   for (int i = 0; i < 50; ++i)

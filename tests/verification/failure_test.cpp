@@ -81,8 +81,8 @@ ThreadRun PullThread(double thread_breaking, double link_breaking) {
   NetSpec spec;
   spec.name = "pair";
   spec.topology = MakeGraphNet({Vector3d(-0.25, 0, 0), Vector3d(0.25, 0, 0)}, {{0, 1}});
-  spec.thread = MakeCableProperties({.youngs_modulus = 3e9, .density = 1140},
-                                    MakeCircleSection(0.001));
+  spec.thread =
+      MakeCableProperties({.youngs_modulus = 3e9, .density = 1140}, MakeCircleSection(0.001));
   spec.thread.tension_only = true;
   spec.thread.rope_smoothing_strain = 1e-4;
   spec.elements_per_thread = 2;
@@ -142,8 +142,8 @@ TEST(Failure, WhatCannotComeOffIsRefused) {
   NetSpec spec;
   spec.name = "ideal";
   spec.topology = MakeGraphNet({Vector3d(0, 0, 0), Vector3d(1, 0, 0)}, {{0, 1}});
-  spec.thread = MakeCableProperties({.youngs_modulus = 3e9, .density = 1140},
-                                    MakeCircleSection(0.001));
+  spec.thread =
+      MakeCableProperties({.youngs_modulus = 3e9, .density = 1140}, MakeCircleSection(0.001));
   spec.thread_breaking_force = 100.0;
   ModelBuilder builder;
   EXPECT_THROW(AddNet(builder, spec), InputError);

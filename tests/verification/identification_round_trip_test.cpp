@@ -76,8 +76,8 @@ std::vector<IdentifiedMode> Identify(const Record& record) {
   options.extra_poles = 10;
   options.decimation = 1;  // every sample: mode 5 with Rayleigh's 17 % lives for a few periods
   options.signal_names = {"tip.vz", "mid.vz"};
-  const VectorXd time = Eigen::Map<const VectorXd>(record.time.data(),
-                                                   static_cast<Index>(record.time.size()));
+  const VectorXd time =
+      Eigen::Map<const VectorXd>(record.time.data(), static_cast<Index>(record.time.size()));
   return IdentifyModes(time, record.signals, options).modes;
 }
 

@@ -95,7 +95,8 @@ double DecayRatio(int pair) {
   std::vector<double> peaks;
   for (std::size_t i = 1; i + 1 < deflection.size(); ++i) {
     const double a = deflection[i - 1], b = deflection[i], c = deflection[i + 1];
-    if (b > a && b >= c && b > 0.0) peaks.push_back(b - 0.125 * (c - a) * (c - a) / (a - 2 * b + c));
+    if (b > a && b >= c && b > 0.0)
+      peaks.push_back(b - 0.125 * (c - a) * (c - a) / (a - 2 * b + c));
   }
   EXPECT_GE(peaks.size(), 6u);
   const double delta = std::log(peaks.front() / peaks.back()) / (peaks.size() - 1);

@@ -56,9 +56,12 @@ INSTANTIATE_TEST_SUITE_P(Integrators, MovingAnchor,
                                            IntegratorType::kExplicitVerlet),
                          [](const auto& info) {
                            switch (info.param) {
-                             case IntegratorType::kGeneralizedAlpha: return "GeneralizedAlpha";
-                             case IntegratorType::kImplicitMidpoint: return "Midpoint";
-                             case IntegratorType::kExplicitVerlet: return "Verlet";
+                             case IntegratorType::kGeneralizedAlpha:
+                               return "GeneralizedAlpha";
+                             case IntegratorType::kImplicitMidpoint:
+                               return "Midpoint";
+                             case IntegratorType::kExplicitVerlet:
+                               return "Verlet";
                            }
                            return "";
                          });

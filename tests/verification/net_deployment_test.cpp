@@ -63,10 +63,10 @@ TEST(NetDeployment, MouthAreaGrowsPeaksAndShrinksAndConverges) {
               coarse.area, coarse.time, fine.area, fine.time);
   for (const Peak& p : {coarse, fine}) {
     EXPECT_GT(p.area, 10.0 * p.first_area);  // opens from the packed 1 m² to most of 25 m²
-    EXPECT_LT(p.area, 25.0);                  // never beyond the design area
+    EXPECT_LT(p.area, 25.0);                 // never beyond the design area
     EXPECT_GT(p.time, 0.3);
-    EXPECT_LT(p.time, 1.1);                   // the peak is inside the run ...
-    EXPECT_LT(p.final_area, 0.7 * p.area);    // ... and the mouth closes again after it
+    EXPECT_LT(p.time, 1.1);                 // the peak is inside the run ...
+    EXPECT_LT(p.final_area, 0.7 * p.area);  // ... and the mouth closes again after it
   }
   EXPECT_NEAR(fine.area, coarse.area, 0.05 * coarse.area);
   EXPECT_NEAR(fine.time, coarse.time, 0.05);

@@ -26,9 +26,9 @@ NetSpec MakeLaunchSpec(KnotModel knots) {
   NetSpec spec;
   spec.name = "net";
   spec.topology = MakeGridNet({.side_u = 1.0, .side_v = 1.0, .meshes_u = 4, .meshes_v = 4});
-  spec.thread = MakeCableProperties(
-      {.youngs_modulus = 3e9, .density = 1140, .axial_damping_time = 1e-5},
-      MakeCircleSection(0.001));
+  spec.thread =
+      MakeCableProperties({.youngs_modulus = 3e9, .density = 1140, .axial_damping_time = 1e-5},
+                          MakeCircleSection(0.001));
   spec.thread.tension_only = true;
   spec.thread.rope_smoothing_strain = 1e-4;
   spec.thread.bending_model = BendingModel::kSecondDerivative;

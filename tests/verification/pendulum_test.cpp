@@ -70,8 +70,8 @@ TEST(Pendulum, NumericalDampingDecaysEnergy) {
   const double drift_1 = RunPendulum(model, Settings(1.0, 1e-3, 1.0)).final_balance_drift;
   const double drift_05 = RunPendulum(model, Settings(0.5, 1e-3, 1.0)).final_balance_drift;
   const double drift_0 = RunPendulum(model, Settings(0.0, 1e-3, 1.0)).final_balance_drift;
-  std::printf("balance drift over 1 s: rho 1: %.3e J, rho 0.5: %.3e J, rho 0: %.3e J\n",
-              drift_1, drift_05, drift_0);
+  std::printf("balance drift over 1 s: rho 1: %.3e J, rho 0.5: %.3e J, rho 0: %.3e J\n", drift_1,
+              drift_05, drift_0);
   EXPECT_LT(drift_05, -10.0 * std::abs(drift_1));
   EXPECT_LT(drift_0, 1.5 * drift_05);
 }
@@ -109,8 +109,8 @@ std::array<double, 2> ObservedOrders(IntegratorType integrator) {
   const double e1 = (tip(h) - reference).norm();
   const double e2 = (tip(h / 2) - reference).norm();
   const double e3 = (tip(h / 4) - reference).norm();
-  std::printf("errors %.3e %.3e %.3e, observed orders %.2f %.2f\n", e1, e2, e3,
-              std::log2(e1 / e2), std::log2(e2 / e3));
+  std::printf("errors %.3e %.3e %.3e, observed orders %.2f %.2f\n", e1, e2, e3, std::log2(e1 / e2),
+              std::log2(e2 / e3));
   return {std::log2(e1 / e2), std::log2(e2 / e3)};
 }
 

@@ -45,8 +45,8 @@ Mode MakeMode(const AssumedModesBeam& beam, int i) {
     }
   Mode mode;
   mode.scale = 1.0 / std::sqrt(norm);
-  mode.omega = beta_l * beta_l *
-               std::sqrt(beam.bending_stiffness / (beam.mass_per_length * std::pow(l, 4)));
+  mode.omega =
+      beta_l * beta_l * std::sqrt(beam.bending_stiffness / (beam.mass_per_length * std::pow(l, 4)));
   mode.tip = mode.scale * ModeShape(beta_l, 1.0);
   mode.moment = mode.scale * moment;
   return mode;

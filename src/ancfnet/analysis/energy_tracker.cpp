@@ -34,8 +34,8 @@ EnergyTracker::EnergyTracker(const Model& model, const Workspace& ws, const Stat
       power_(state.v.dot(ws.viscous_force)) {
   account_.strain = CalcStrainEnergy(model, ws, state.q);
   // Gravity and the tidal potential of an orbital frame; "0.0 −" gives +0, not −0, without them.
-  account_.gravity = 0.0 - load_factor * ws.gravity_force.dot(state.q) +
-                     CalcOrbitalPotential(model, ws, state.q);
+  account_.gravity =
+      0.0 - load_factor * ws.gravity_force.dot(state.q) + CalcOrbitalPotential(model, ws, state.q);
 }
 
 void EnergyTracker::Advance(const Model& model, const Workspace& ws, const State& state,

@@ -69,7 +69,8 @@ void EvaluateProbe(const Probe& probe, const Model& model, const State& state,
     case ProbeQuantity::kMouthArea: {
       const Net& net = model.nets()[probe.net];
       std::vector<Vector3d> polygon;
-      for (Index knot : net.perimeter) polygon.push_back(state.q.segment<3>(model.point_masses()[knot].dof));
+      for (Index knot : net.perimeter)
+        polygon.push_back(state.q.segment<3>(model.point_masses()[knot].dof));
       values->push_back(CalcMouthArea(polygon, net.axis));
       break;
     }

@@ -11,13 +11,13 @@
 namespace ancfnet {
 
 enum class ProbeQuantity {
-  kPosition,    ///< NAME.x/y/z of a point
-  kVelocity,    ///< NAME.vx/vy/vz of a point
-  kEnergy,      ///< NAME.kinetic/strain/gravity/work/dissipated of the whole system
-  kMouthArea,   ///< NAME.area: the net's perimeter polygon projected normal to its axis (m²)
-  kCentroid,    ///< NAME.x/y/z: mean position of the net's knots (m)
+  kPosition,          ///< NAME.x/y/z of a point
+  kVelocity,          ///< NAME.vx/vy/vz of a point
+  kEnergy,            ///< NAME.kinetic/strain/gravity/work/dissipated of the whole system
+  kMouthArea,         ///< NAME.area: the net's perimeter polygon projected normal to its axis (m²)
+  kCentroid,          ///< NAME.x/y/z: mean position of the net's knots (m)
   kCentroidVelocity,  ///< NAME.vx/vy/vz: mean velocity of the net's knots (m/s)
-  kDistance,    ///< NAME.distance: travel of that centroid along the net's axis (m)
+  kDistance,          ///< NAME.distance: travel of that centroid along the net's axis (m)
   kMaxTension,  ///< NAME.tension, NAME.thread: largest thread tension of a net (N) and its thread
   kLinkForce,   ///< NAME.tension, NAME.fx/fy/fz: a link's tension T (N) and force on its 2nd point
 };

@@ -43,10 +43,9 @@ void CalcInternalForces(const Model& model, const VectorXd& q, const VectorXd& v
   const Index n = static_cast<Index>(elements.size());
 #pragma omp parallel for schedule(static) if (elements.size() >= kParallelElements)
   for (Index e = 0; e < n; ++e) {
-    CalcCableInternalForce(elements[e].parameters, model.Gather(elements[e], q),
-                           model.Gather(elements[e], v),
-                           {.force = &ws.element_force[e],
-                            .viscous_force = &ws.element_viscous_force[e]});
+    CalcCableInternalForce(
+        elements[e].parameters, model.Gather(elements[e], q), model.Gather(elements[e], v),
+        {.force = &ws.element_force[e], .viscous_force = &ws.element_viscous_force[e]});
   }
   ws.internal_force.setZero();
   ws.viscous_force.setZero();

@@ -46,8 +46,7 @@ void AddLinkForces(const Model& model, const VectorXd& q, const VectorXd& v, Wor
 }
 
 void AddLinkJacobians(const Model& model, const VectorXd& q, const VectorXd& v,
-                      const IterationWeights& weights, const Workspace& ws,
-                      SystemMatrix* matrix) {
+                      const IterationWeights& weights, const Workspace& ws, SystemMatrix* matrix) {
   const auto& links = model.links();
   for (std::size_t l = 0; l < links.size(); ++l) {
     if (ws.link_broken[l]) continue;
@@ -63,7 +62,8 @@ void AddLinkJacobians(const Model& model, const VectorXd& q, const VectorXd& v,
 }
 
 double CalcLinkEnergy(const SpringDamperLink& link, const VectorXd& q) {
-  return CalcSpringDamper(link.law, link.natural_length, Relative(link, q), Vector3d::Zero()).energy;
+  return CalcSpringDamper(link.law, link.natural_length, Relative(link, q), Vector3d::Zero())
+      .energy;
 }
 
 double CalcLinkEnergy(const Model& model, const Workspace& ws, const VectorXd& q) {

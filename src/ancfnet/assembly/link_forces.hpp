@@ -16,8 +16,7 @@ void AddLinkForces(const Model& model, const VectorXd& q, const VectorXd& v, Wor
 /// −σ_i σ_j w_i w_j (c_K ∂f₂/∂d + c_C ∂f₂/∂ḋ), σ = +1 on the second point's blocks, −1 on the
 /// first's, d = r₂ − r₁.
 void AddLinkJacobians(const Model& model, const VectorXd& q, const VectorXd& v,
-                      const IterationWeights& weights, const Workspace& ws,
-                      SystemMatrix* matrix);
+                      const IterationWeights& weights, const Workspace& ws, SystemMatrix* matrix);
 
 /// Energy stored in one link (J), broken or not.
 double CalcLinkEnergy(const SpringDamperLink& link, const VectorXd& q);

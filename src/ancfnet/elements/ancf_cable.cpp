@@ -47,7 +47,8 @@ void AddKronecker(const Vector4d& u, const Vector4d& v, const Matrix3d& x, doubl
 // K += scale · (u vᵀ ⊗ I).
 void AddKroneckerIdentity(const Vector4d& u, const Vector4d& v, double scale, Matrix12d& k) {
   for (int j = 0; j < 4; ++j)
-    for (int l = 0; l < 4; ++l) k.block<3, 3>(3 * j, 3 * l).diagonal().array() += scale * u[j] * v[l];
+    for (int l = 0; l < 4; ++l)
+      k.block<3, 3>(3 * j, 3 * l).diagonal().array() += scale * u[j] * v[l];
 }
 
 // 12×3 matrix whose 3×3 block j is u_j X + v_j Y.
@@ -75,7 +76,8 @@ void AddSmoothRopeTerms(const CableElementParameters& p, double strain, double s
     const double dn_dstrain = ea * phi.slope + ea_tau * phi.curvature * strain_rate;
     out.stiffness->noalias() += (weight * dn_dstrain) * de * de.transpose();
     AddKroneckerIdentity(ds, ds, weight * n, *out.stiffness);
-    if (ea_tau > 0.0) out.stiffness->noalias() += (weight * ea_tau * phi.slope) * de * de_dot.transpose();
+    if (ea_tau > 0.0)
+      out.stiffness->noalias() += (weight * ea_tau * phi.slope) * de * de_dot.transpose();
   }
   if (out.damping && ea_tau > 0.0)
     out.damping->noalias() += (weight * ea_tau * phi.slope) * de * de.transpose();
@@ -127,10 +129,10 @@ void AddBendingTerms(const CableElementParameters& p, const Matrix34d& e, const 
   const double h = 1.0 / (g * std::sqrt(g));  // g^{-3/2}
   const Vector3d c = a.cross(b);
   const Vector3d k = h * c;
-  const Vector12d da = DistributeForce(ds, a);  // ∂g/∂e / 2
+  const Vector12d da = DistributeForce(ds, a);   // ∂g/∂e / 2
   const Vector12d grad_h = (-3.0 * h / g) * da;  // ∂h/∂e
-  // Jᵀ x = h (∂c/∂e)ᵀ x + ∇h (c·x), with block j of (∂c/∂e)ᵀ x equal to S′_j (b × x) − S″_j (a × x):
-  // the force path needs no 12×3 matrix.
+  // Jᵀ x = h (∂c/∂e)ᵀ x + ∇h (c·x), with block j of (∂c/∂e)ᵀ x equal to S′_j (b × x) − S″_j (a ×
+  // x): the force path needs no 12×3 matrix.
   const auto apply_jt = [&](const Vector3d& x) -> Vector12d {
     return h * (DistributeForce(ds, b.cross(x)) - DistributeForce(dds, a.cross(x))) +
            c.dot(x) * grad_h;
@@ -158,8 +160,8 @@ void AddBendingTerms(const CableElementParameters& p, const Matrix34d& e, const 
   if (!out.stiffness && !(out.damping && damped)) return;
 
   const Matrix12x3d dc_t = StackBlocks(ds, Skew(b), dds, -Skew(a));  // (∂c/∂e)ᵀ
-  const Matrix12x3d jk_t = h * dc_t + grad_h * c.transpose();         // Jᵀ = (∂k/∂e)ᵀ
-  const Vector12d jk = apply_jt(k);                                   // Jᵀ k = κ ∂κ/∂e
+  const Matrix12x3d jk_t = h * dc_t + grad_h * c.transpose();        // Jᵀ = (∂k/∂e)ᵀ
+  const Vector12d jk = apply_jt(k);                                  // Jᵀ k = κ ∂κ/∂e
   if (out.damping && damped)
     out.damping->noalias() +=
         (weight * ei_tau / d) * (jk * jk.transpose() + eps2 * jk_t * jk_t.transpose());
@@ -201,7 +203,8 @@ void AddSecondDerivativeBendingTerms(const CableElementParameters& p, const Matr
   const double ei_tau = ei * p.bending_damping_time;
   const Vector3d b_dot = e_dot * dds;
   if (out.force) out.force->noalias() += DistributeForce(dds, ei * (e * dds) + ei_tau * b_dot);
-  if (out.viscous_force && ei_tau > 0.0) out.viscous_force->noalias() += DistributeForce(dds, ei_tau * b_dot);
+  if (out.viscous_force && ei_tau > 0.0)
+    out.viscous_force->noalias() += DistributeForce(dds, ei_tau * b_dot);
   if (out.stiffness) AddKroneckerIdentity(dds, dds, ei, *out.stiffness);
   if (out.damping && ei_tau > 0.0) AddKroneckerIdentity(dds, dds, ei_tau, *out.damping);
 }
@@ -257,7 +260,8 @@ double CalcCableMaxTension(const CableElementParameters& p, const Vector12d& e) 
   const GaussRule& axial = GetGaussRule(p.axial_gauss_points);
   double tension = -std::numeric_limits<double>::infinity();
   for (int i = 0; i < axial.size; ++i)
-    tension = std::max(tension, CalcCableAxialForce(p, CalcCableStrain(p, e, axial.points[i]).axial));
+    tension =
+        std::max(tension, CalcCableAxialForce(p, CalcCableStrain(p, e, axial.points[i]).axial));
   return tension;
 }
 

@@ -44,7 +44,7 @@ struct CableElementParameters {
 
 /// Which outputs CalcCableInternalForce fills; null pointers are skipped.
 struct CableForceOutputs {
-  Vector12d* force = nullptr;          ///< Q = ∂U/∂e + Q_visc (N), the internal generalised force
+  Vector12d* force = nullptr;  ///< Q = ∂U/∂e + Q_visc (N), the internal generalised force
   Vector12d* viscous_force = nullptr;  ///< the Kelvin–Voigt part Q_visc alone (N)
   Matrix12d* stiffness = nullptr;      ///< ∂Q/∂e (N/m)
   Matrix12d* damping = nullptr;        ///< ∂Q/∂ė (N s/m)

@@ -31,7 +31,8 @@ DampingModel::DampingModel(const Model& model) : model_(model) {
   // The lowest modes, rigid ones included, then the first num_modes elastic ones of them.
   const int rigid_allowance = 6;
   const Index unknowns = DofMap::FreeCoordinates(model).num_unknowns();
-  const int wanted = static_cast<int>(std::min<Index>(modal.num_modes + rigid_allowance, unknowns - 1));
+  const int wanted =
+      static_cast<int>(std::min<Index>(modal.num_modes + rigid_allowance, unknowns - 1));
   const UndampedModes modes = CalcUndampedModes(model, q0, {.num_modes = wanted});
   if (!modes.converged)
     throw SolverError("modal damping: the modes of the reference configuration: " + modes.message,

@@ -1,10 +1,10 @@
 #include "ancfnet/integrators/explicit_verlet.hpp"
 
-#include <cmath>
-#include <limits>
+#include <fmt/format.h>
 
 #include <Eigen/Eigenvalues>
-#include <fmt/format.h>
+#include <cmath>
+#include <limits>
 
 namespace ancfnet {
 
@@ -20,8 +20,7 @@ bool ExplicitVerletIntegrator::Initialize(State* state) {
   return true;
 }
 
-void ExplicitVerletIntegrator::CalcAcceleration(const VectorXd& q, const VectorXd& v,
-                                                VectorXd* a) {
+void ExplicitVerletIntegrator::CalcAcceleration(const VectorXd& q, const VectorXd& v, VectorXd* a) {
   CalcInternalForces(model_, q, v, ws_);
   damping_.AddForces(v, ws_);
   CalcExternalForces(model_, q, 1.0, ws_);
@@ -45,9 +44,9 @@ StepOutcome ExplicitVerletIntegrator::Step(double h, State* state) {
   if (!state->q.allFinite() || !state->v.allFinite()) {
     *state = previous_;
     outcome.accepted = false;
-    outcome.failure = fmt::format(
-        "non-finite state: is h = {:.3g} s above the stability limit (about {:.3g} s)?", h,
-        EstimateCriticalStep(state->q));
+    outcome.failure =
+        fmt::format("non-finite state: is h = {:.3g} s above the stability limit (about {:.3g} s)?",
+                    h, EstimateCriticalStep(state->q));
     return outcome;
   }
   // Viscous forces for the energy account at the full-step velocity.
@@ -66,8 +65,8 @@ double ExplicitVerletIntegrator::EstimateCriticalStep(const VectorXd& q) const {
     CalcCableInternalForce(element.parameters, e, no_velocity, {.stiffness = &stiffness});
     // Symmetric part: the tangent of a conservative element is symmetric up to round-off.
     const Matrix12d k = 0.5 * (stiffness + stiffness.transpose());
-    const Eigen::GeneralizedSelfAdjointEigenSolver<Matrix12d> eigen(
-        k, ws_.element_mass[i], Eigen::EigenvaluesOnly);
+    const Eigen::GeneralizedSelfAdjointEigenSolver<Matrix12d> eigen(k, ws_.element_mass[i],
+                                                                    Eigen::EigenvaluesOnly);
     omega_max_squared = std::max(omega_max_squared, eigen.eigenvalues().maxCoeff());
   }
   return omega_max_squared > 0.0 ? 2.0 / std::sqrt(omega_max_squared)

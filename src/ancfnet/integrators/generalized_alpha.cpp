@@ -42,16 +42,17 @@ class GeneralizedAlphaIntegrator::StepProblem {
       for (Index i : free) {
         const double a_bar_next =
             -(h_ * prev.v[i] + h_ * h_ * (0.5 - c.beta) * a_bar[i]) / (h_ * h_ * c.beta);
-        state_.a[i] = ((1.0 - c.alpha_m) * a_bar_next - c.alpha_f * prev.a[i] +
-                       c.alpha_m * a_bar[i]) / (1.0 - c.alpha_f);
+        state_.a[i] =
+            ((1.0 - c.alpha_m) * a_bar_next - c.alpha_f * prev.a[i] + c.alpha_m * a_bar[i]) /
+            (1.0 - c.alpha_f);
       }
     }
     for (Index i : free) {
       const double a_bar_next =
           ((1.0 - c.alpha_f) * state_.a[i] + c.alpha_f * prev.a[i] - c.alpha_m * a_bar[i]) /
           (1.0 - c.alpha_m);
-      state_.q[i] = prev.q[i] + h_ * prev.v[i] +
-                    h_ * h_ * ((0.5 - c.beta) * a_bar[i] + c.beta * a_bar_next);
+      state_.q[i] =
+          prev.q[i] + h_ * prev.v[i] + h_ * h_ * ((0.5 - c.beta) * a_bar[i] + c.beta * a_bar_next);
       state_.v[i] = prev.v[i] + h_ * ((1.0 - c.gamma) * a_bar[i] + c.gamma * a_bar_next);
     }
     ApplyPrescribedMotion(core_.model().prescribed(), state_.t, &state_.q, &state_.v, &state_.a);
@@ -126,8 +127,9 @@ StepOutcome GeneralizedAlphaIntegrator::Step(double h, State* state) {
   }
   const GeneralizedAlphaCoefficients& c = coefficients_;
   for (Index i : core_.dofs().coordinates())
-    a_bar_[i] = ((1.0 - c.alpha_f) * state->a[i] + c.alpha_f * previous.a[i] -
-                 c.alpha_m * a_bar_[i]) / (1.0 - c.alpha_m);
+    a_bar_[i] =
+        ((1.0 - c.alpha_f) * state->a[i] + c.alpha_f * previous.a[i] - c.alpha_m * a_bar_[i]) /
+        (1.0 - c.alpha_m);
   // Forces at the accepted state, for the energy account.
   core_.CalcForces(state->q, state->v);
   return outcome;

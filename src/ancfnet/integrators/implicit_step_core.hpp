@@ -24,7 +24,9 @@ class ImplicitStepCore {
   void BeginStep(double h, const State& state);
   /// Newton iterations on `problem` with the shared solver.
   template <class Problem>
-  NewtonResult Solve(Problem& problem) { return newton_.Solve(problem); }
+  NewtonResult Solve(Problem& problem) {
+    return newton_.Solve(problem);
+  }
 
   /// r = (M a + Q_int(q, v) − Q_ext(q)) restricted to the unknowns; the forces stay in ws().
   void CalcResidual(const VectorXd& q, const VectorXd& v, const VectorXd& a, VectorXd* r);

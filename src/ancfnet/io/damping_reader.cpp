@@ -35,7 +35,8 @@ void ReadModal(const YamlValue& value, ModelBuilder* builder) {
   modal.num_modes = map.Get("modes").AsInt(1, 10000);
   if (auto v = map.Find("ratios")) {
     if (map.Find("table")) v->Fail("give either ratios or table, not both");
-    for (const YamlValue& ratio : v->AsList(true)) modal.ratios.push_back(ratio.AsNumberIn(0.0, 0.999999));
+    for (const YamlValue& ratio : v->AsList(true))
+      modal.ratios.push_back(ratio.AsNumberIn(0.0, 0.999999));
   } else {
     for (const YamlValue& row : map.Get("table").AsList(true))
       modal.table.push_back(ReadPairOfNumbers(row));

@@ -87,7 +87,8 @@ std::array<Index, 2> ReadGraphThread(const YamlValue& thread, const YamlMap& net
 NetTopology ReadGraphTopology(const YamlMap& map, const Library& library,
                               std::vector<ThreadDesign>* designs) {
   std::vector<Vector3d> knots;
-  for (const YamlValue& knot : map.Get("knot_positions").AsList(true)) knots.push_back(knot.AsVector3());
+  for (const YamlValue& knot : map.Get("knot_positions").AsList(true))
+    knots.push_back(knot.AsVector3());
   std::vector<std::array<Index, 2>> threads;
   for (const YamlValue& thread : map.Get("threads").AsList(true)) {
     designs->emplace_back();
@@ -112,8 +113,7 @@ void ReadBullets(const YamlValue& value, NetSpec* spec) {
     knots.clear();
     for (const YamlValue& k : v->AsList(true)) {
       const int knot = k.AsInt(0);
-      if (knot >= static_cast<int>(spec->topology.knots.size()))
-        k.Fail("no such knot in the net");
+      if (knot >= static_cast<int>(spec->topology.knots.size())) k.Fail("no such knot in the net");
       knots.push_back(knot);
     }
   }
@@ -163,13 +163,28 @@ void ReadNet(const YamlValue& item, const Library& library, ModelBuilder* builde
              std::vector<std::string>* point_masses) {
   const YamlMap map = item.AsMap();
   const std::size_t type = map.Get("type").AsChoice({"square", "diamond", "graph"});
-  std::vector<std::string_view> keys = {
-      "name", "type", "material", "section", "elements_per_thread", "tension_only",
-      "rope_smoothing_strain", "bending",
-      "natural_length_ratio", "knot_model", "knot_mass", "knot_link", "velocity",
-      "packing_ratio", "bullets", "thread_breaking_force", "link_breaking_force", "tether"};
-  if (type == 2) keys.insert(keys.end(), {"knot_positions", "threads", "perimeter", "axis"});
-  else keys.insert(keys.end(), {"side", "meshes", "mesh_size", "center", "axis_u", "axis_v"});
+  std::vector<std::string_view> keys = {"name",
+                                        "type",
+                                        "material",
+                                        "section",
+                                        "elements_per_thread",
+                                        "tension_only",
+                                        "rope_smoothing_strain",
+                                        "bending",
+                                        "natural_length_ratio",
+                                        "knot_model",
+                                        "knot_mass",
+                                        "knot_link",
+                                        "velocity",
+                                        "packing_ratio",
+                                        "bullets",
+                                        "thread_breaking_force",
+                                        "link_breaking_force",
+                                        "tether"};
+  if (type == 2)
+    keys.insert(keys.end(), {"knot_positions", "threads", "perimeter", "axis"});
+  else
+    keys.insert(keys.end(), {"side", "meshes", "mesh_size", "center", "axis_u", "axis_v"});
   map.CheckKeys(keys);
 
   NetSpec spec;
@@ -188,10 +203,11 @@ void ReadNet(const YamlValue& item, const Library& library, ModelBuilder* builde
   if (auto v = map.Find("elements_per_thread")) spec.elements_per_thread = v->AsInt(1, 1000);
   if (auto v = map.Find("natural_length_ratio")) spec.natural_length_ratio = v->AsPositive();
   if (auto v = map.Find("knot_model"))
-    spec.knot_model = v->AsEnum<KnotModel>(
-        {{"ideal", KnotModel::kIdeal}, {"compliant", KnotModel::kCompliant}});
+    spec.knot_model =
+        v->AsEnum<KnotModel>({{"ideal", KnotModel::kIdeal}, {"compliant", KnotModel::kCompliant}});
   if (auto v = map.Find("knot_mass")) spec.knot_mass = v->AsNonNegative();
-  if (spec.knot_model == KnotModel::kCompliant) spec.link_law = ReadConnectionLaw(map.Get("knot_link"));
+  if (spec.knot_model == KnotModel::kCompliant)
+    spec.link_law = ReadConnectionLaw(map.Get("knot_link"));
   if (auto v = map.Find("velocity")) spec.velocity = v->AsVector3();
   if (auto v = map.Find("packing_ratio")) spec.packing_ratio = v->AsNumberIn(1e-6, 1.0);
   if (auto v = map.Find("bullets")) ReadBullets(*v, &spec);

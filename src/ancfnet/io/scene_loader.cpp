@@ -1,17 +1,16 @@
 #include "ancfnet/io/scene_loader.hpp"
 
-#include <limits>
+#include <fmt/format.h>
+#include <yaml-cpp/yaml.h>
 
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <sstream>
 #include <system_error>
 #include <utility>
 #include <vector>
-
-#include <fmt/format.h>
-#include <yaml-cpp/yaml.h>
 
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/io/closest_name.hpp"
@@ -103,14 +102,14 @@ void ReadOrbitalFrame(const YamlValue& value, ModelBuilder* builder) {
 }
 
 // point_masses: - {name, mass, position, velocity, fixed}
-void ReadPointMass(const YamlValue& item, ModelBuilder* builder,
-                   std::vector<std::string>* names) {
+void ReadPointMass(const YamlValue& item, ModelBuilder* builder, std::vector<std::string>* names) {
   const YamlMap map = item.AsMap();
   map.CheckKeys({"name", "mass", "position", "velocity", "fixed"});
   const std::string name = map.Get("name").AsString();
   const double mass = map.Get("mass").AsPositive();
   const Vector3d position = map.Get("position").AsVector3();
-  const Vector3d velocity = map.Find("velocity") ? map.Get("velocity").AsVector3() : Vector3d::Zero();
+  const Vector3d velocity =
+      map.Find("velocity") ? map.Get("velocity").AsVector3() : Vector3d::Zero();
   item.Locate([&] { builder->AddPointMass(name, mass, position, velocity); });
   if (auto v = map.Find("fixed"); v && v->AsBool()) builder->FixPointMass(name);
   names->push_back(name);
@@ -164,10 +163,10 @@ void ReadCable(const YamlValue& item, const Library& library, ModelBuilder* buil
   if (spec.num_elements > kMaxElementsPerCable)
     elements.Fail(fmt::format("too many elements: at most {} per cable, got {}",
                               kMaxElementsPerCable, spec.num_elements));
-  const Material& material = Lookup(library.materials, map.Get("material"), "material",
-                                    "known materials");
-  const Section& section = Lookup(library.sections, map.Get("section"), "section",
-                                  "known sections");
+  const Material& material =
+      Lookup(library.materials, map.Get("material"), "material", "known materials");
+  const Section& section =
+      Lookup(library.sections, map.Get("section"), "section", "known sections");
   CableProperties& properties = spec.properties;
   properties = MakeCableProperties(material, section);
   if (auto v = map.Find("tension_only")) properties.tension_only = v->AsBool();
@@ -270,26 +269,31 @@ std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
   for (const YamlValue& item : list.AsList()) {
     const YamlMap map = item.AsMap();
     Probe probe;
-    probe.quantity = map.Get("quantity").AsEnum<ProbeQuantity>(
-        {{"position", ProbeQuantity::kPosition},
-         {"velocity", ProbeQuantity::kVelocity},
-         {"energy", ProbeQuantity::kEnergy},
-         {"mouth_area", ProbeQuantity::kMouthArea},
-         {"centroid", ProbeQuantity::kCentroid},
-         {"centroid_velocity", ProbeQuantity::kCentroidVelocity},
-         {"distance", ProbeQuantity::kDistance},
-         {"max_tension", ProbeQuantity::kMaxTension},
-         {"link_force", ProbeQuantity::kLinkForce}});
+    probe.quantity =
+        map.Get("quantity")
+            .AsEnum<ProbeQuantity>({{"position", ProbeQuantity::kPosition},
+                                    {"velocity", ProbeQuantity::kVelocity},
+                                    {"energy", ProbeQuantity::kEnergy},
+                                    {"mouth_area", ProbeQuantity::kMouthArea},
+                                    {"centroid", ProbeQuantity::kCentroid},
+                                    {"centroid_velocity", ProbeQuantity::kCentroidVelocity},
+                                    {"distance", ProbeQuantity::kDistance},
+                                    {"max_tension", ProbeQuantity::kMaxTension},
+                                    {"link_force", ProbeQuantity::kLinkForce}});
     const bool whole_system = probe.quantity == ProbeQuantity::kEnergy;
     const bool of_a_point =
         probe.quantity == ProbeQuantity::kPosition || probe.quantity == ProbeQuantity::kVelocity;
     if (auto at = map.Find("at"); at && whole_system)
       at->Fail("an energy probe reads the whole system and takes no point");
     const bool of_a_link = probe.quantity == ProbeQuantity::kLinkForce;
-    if (of_a_point) map.CheckKeys({"name", "quantity", "at"});
-    else if (whole_system) map.CheckKeys({"name", "quantity"});
-    else if (of_a_link) map.CheckKeys({"name", "quantity", "link"});
-    else map.CheckKeys({"name", "quantity", "net"});
+    if (of_a_point)
+      map.CheckKeys({"name", "quantity", "at"});
+    else if (whole_system)
+      map.CheckKeys({"name", "quantity"});
+    else if (of_a_link)
+      map.CheckKeys({"name", "quantity", "link"});
+    else
+      map.CheckKeys({"name", "quantity", "net"});
     const YamlValue name = map.Get("name");
     probe.name = name.AsString();
     for (const Probe& other : probes)
@@ -299,11 +303,11 @@ std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
       const CablePointRef point = ReadPoint(at, point_masses);
       probe.point = at.Locate([&] { return model.LocatePoint(point.cable, point.s); });
     } else if (of_a_link) {
-      probe.link = ReadNamedIndex(map.Get("link"), model.links(), "spring-damper", "spring-dampers");
+      probe.link =
+          ReadNamedIndex(map.Get("link"), model.links(), "spring-damper", "spring-dampers");
     } else if (!whole_system) {
       probe.net = ReadNamedIndex(map.Get("net"), model.nets(), "net", "nets");
-      probe.reference =
-          CalcNetCentroid(model, model.nets()[probe.net], model.initial_positions());
+      probe.reference = CalcNetCentroid(model, model.nets()[probe.net], model.initial_positions());
     }
     probes.push_back(std::move(probe));
   }
@@ -353,7 +357,8 @@ Scene ReadScene(const YamlValue& root) {
 }
 
 [[noreturn]] void ThrowYamlError(const std::string& source, const YAML::Exception& error) {
-  if (error.mark.is_null()) throw InputError(fmt::format("{}: invalid YAML: {}", source, error.msg));
+  if (error.mark.is_null())
+    throw InputError(fmt::format("{}: invalid YAML: {}", source, error.msg));
   throw InputError(fmt::format("{}:{}:{}: invalid YAML: {}", source, error.mark.line + 1,
                                error.mark.column + 1, error.msg));
 }

@@ -1,8 +1,8 @@
 #include "ancfnet/io/scene_settings_reader.hpp"
 
-#include <optional>
-
 #include <fmt/format.h>
+
+#include <optional>
 
 namespace ancfnet {
 namespace {
@@ -19,18 +19,18 @@ void ReadStaticSettings(const YamlMap& map, StaticSettings* statics) {
   if (auto v = map.Find("max_step_cuts")) statics->max_step_cuts = v->AsInt(0);
   if (auto v = map.Find("line_search")) {
     statics->line_search = v->AsEnum<LineSearchMode>({{"auto", LineSearchMode::kAuto},
-                                                       {"always", LineSearchMode::kAlways},
-                                                       {"never", LineSearchMode::kNever}});
+                                                      {"always", LineSearchMode::kAlways},
+                                                      {"never", LineSearchMode::kNever}});
   }
   ReadNewtonSettings(map, &statics->newton);
 }
 
 void ReadDynamicSettings(const YamlMap& map, DynamicSettings* dynamics) {
   if (auto v = map.Find("integrator")) {
-    dynamics->integrator = v->AsEnum<IntegratorType>(
-        {{"generalized_alpha", IntegratorType::kGeneralizedAlpha},
-         {"midpoint", IntegratorType::kImplicitMidpoint},
-         {"explicit_verlet", IntegratorType::kExplicitVerlet}});
+    dynamics->integrator =
+        v->AsEnum<IntegratorType>({{"generalized_alpha", IntegratorType::kGeneralizedAlpha},
+                                   {"midpoint", IntegratorType::kImplicitMidpoint},
+                                   {"explicit_verlet", IntegratorType::kExplicitVerlet}});
   }
   if (auto v = map.Find("spectral_radius")) dynamics->spectral_radius = v->AsNumberIn(0.0, 1.0);
   if (auto v = map.Find("time_step")) dynamics->time_step = v->AsPositive();
@@ -41,10 +41,10 @@ void ReadDynamicSettings(const YamlMap& map, DynamicSettings* dynamics) {
       v->FailExpected(fmt::format("a number ≤ time_step ({})", dynamics->time_step));
   }
   if (auto v = map.Find("jacobian_update")) {
-    dynamics->jacobian_update = v->AsEnum<JacobianUpdate>(
-        {{"every_iteration", JacobianUpdate::kEveryIteration},
-         {"every_step", JacobianUpdate::kEveryStep},
-         {"adaptive", JacobianUpdate::kAdaptive}});
+    dynamics->jacobian_update =
+        v->AsEnum<JacobianUpdate>({{"every_iteration", JacobianUpdate::kEveryIteration},
+                                   {"every_step", JacobianUpdate::kEveryStep},
+                                   {"adaptive", JacobianUpdate::kAdaptive}});
   }
   ReadNewtonSettings(map, &dynamics->newton);
 }
@@ -70,7 +70,8 @@ OutputSettings ReadOutputSettings(const YamlValue& output) {
   OutputSettings settings;
   if (auto v = map.Find("interval")) settings.interval = v->AsNonNegative();
   if (auto v = map.Find("vtk")) settings.write_vtk = v->AsBool();
-  if (auto v = map.Find("vtk_points_per_element")) settings.vtk_points_per_element = v->AsInt(1, 64);
+  if (auto v = map.Find("vtk_points_per_element"))
+    settings.vtk_points_per_element = v->AsInt(1, 64);
   return settings;
 }
 

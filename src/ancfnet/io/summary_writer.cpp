@@ -1,13 +1,13 @@
 #include "ancfnet/io/summary_writer.hpp"
 
-#include "ancfnet/model/net_builder.hpp"
+#include <fmt/format.h>
 
 #include <cmath>
-#include <fmt/format.h>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "ancfnet/common/error.hpp"
+#include "ancfnet/model/net_builder.hpp"
 
 namespace ancfnet {
 namespace {
@@ -18,12 +18,9 @@ using Json = nlohmann::ordered_json;
 Json Number(double value) { return std::isfinite(value) ? Json(value) : Json(nullptr); }
 
 Json EnergyJson(const EnergyAccount& energy) {
-  return {{"kinetic", Number(energy.kinetic)},
-          {"strain", Number(energy.strain)},
-          {"gravity", Number(energy.gravity)},
-          {"work", Number(energy.work)},
-          {"dissipated", Number(energy.dissipated)},
-          {"balance", Number(energy.Balance())}};
+  return {{"kinetic", Number(energy.kinetic)},       {"strain", Number(energy.strain)},
+          {"gravity", Number(energy.gravity)},       {"work", Number(energy.work)},
+          {"dissipated", Number(energy.dissipated)}, {"balance", Number(energy.Balance())}};
 }
 
 Json FailuresJson(const std::vector<FailureEvent>& failures) {
@@ -56,20 +53,22 @@ Json ProbeJson(const Probe& probe, const Model& model, const State& state,
     case ProbeQuantity::kCentroidVelocity: {
       Json vector = Json::array();
       for (double value : values) vector.push_back(Number(value));
-      return {{probe.quantity == ProbeQuantity::kCentroid ? "centroid" : "centroid_velocity",
-               vector}};
+      return {
+          {probe.quantity == ProbeQuantity::kCentroid ? "centroid" : "centroid_velocity", vector}};
     }
     case ProbeQuantity::kMouthArea:
       return {{"mouth_area", Number(values[0])}};
     case ProbeQuantity::kDistance:
       return {{"distance", Number(values[0])}};
     case ProbeQuantity::kMaxTension:
-      return {{"max_tension", {{"tension", Number(values[0])},
-                               {"thread", ThreadName(model.nets()[probe.net].name,
-                                                     static_cast<Index>(values[1]))}}}};
+      return {
+          {"max_tension",
+           {{"tension", Number(values[0])},
+            {"thread", ThreadName(model.nets()[probe.net].name, static_cast<Index>(values[1]))}}}};
     case ProbeQuantity::kLinkForce:
-      return {{"link_force", {{"tension", Number(values[0])},
-                              {"force", {Number(values[1]), Number(values[2]), Number(values[3])}}}}};
+      return {{"link_force",
+               {{"tension", Number(values[0])},
+                {"force", {Number(values[1]), Number(values[2]), Number(values[3])}}}}};
   }
   return Json::object();
 }

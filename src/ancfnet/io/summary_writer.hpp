@@ -15,26 +15,27 @@ namespace ancfnet {
 
 /// Counters and outcome of a static or dynamic run.
 struct RunSummary {
-  std::string analysis;    ///< "static" or "dynamic"
-  bool completed = true;   ///< false when the solver gave up
-  std::string message;     ///< why the run failed (empty when it completed)
-  double end_time = 0.0;   ///< final time (s) or load factor reached
-  long steps = 0;          ///< accepted steps
+  std::string analysis;   ///< "static" or "dynamic"
+  bool completed = true;  ///< false when the solver gave up
+  std::string message;    ///< why the run failed (empty when it completed)
+  double end_time = 0.0;  ///< final time (s) or load factor reached
+  long steps = 0;         ///< accepted steps
   long newton_iterations = 0;
   long jacobian_updates = 0;
   long step_cuts = 0;
-  long outputs = 0;        ///< output steps written (rows of probes.csv)
-  double wall_time_s = 0.0;    ///< whole analysis, outputs included (s)
-  double output_time_s = 0.0;  ///< part of it spent writing probes.csv and VTK frames (s)
-  EnergyAccount energy;      ///< energies at the end (J)
+  long outputs = 0;                    ///< output steps written (rows of probes.csv)
+  double wall_time_s = 0.0;            ///< whole analysis, outputs included (s)
+  double output_time_s = 0.0;          ///< part of it spent writing probes.csv and VTK frames (s)
+  EnergyAccount energy;                ///< energies at the end (J)
   std::vector<FailureEvent> failures;  ///< threads and connections that broke
 };
 
 /// Writes `summary` and the final values of `probes` (EvaluateProbe on `state` with
 /// summary.energy) to `path` as JSON, indented by 2:
 /// `{"status": "completed"|"failed", "message", "analysis", "time", "steps", "newton_iterations",
-/// "jacobian_updates", "step_cuts", "wall_time_s", "output_time_s", "energy": {"kinetic", "strain", "gravity",
-/// "work", "dissipated", "balance"}, "failures": [{"time", "what", "tension"}], "probes": {NAME: {"position": [x, y, z]} |
+/// "jacobian_updates", "step_cuts", "wall_time_s", "output_time_s", "energy": {"kinetic", "strain",
+/// "gravity", "work", "dissipated", "balance"}, "failures": [{"time", "what", "tension"}],
+/// "probes": {NAME: {"position": [x, y, z]} |
 /// {"velocity": [vx, vy, vz]} | {"energy": {"kinetic", …}}}}`. Units as in the CSV (s, m, m/s,
 /// J). Non-finite numbers are written as null. Throws InputError "cannot write PATH" on failure.
 void WriteSummaryJson(const std::filesystem::path& path, const RunSummary& summary,

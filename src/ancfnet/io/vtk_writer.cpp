@@ -1,8 +1,9 @@
 #include "ancfnet/io/vtk_writer.hpp"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <cstdio>
-#include <fmt/format.h>
 #include <iterator>
 #include <system_error>
 
@@ -27,8 +28,10 @@ template <typename Samples, typename Writer>
 void AppendDataArray(std::string* out, const char* name, int components, const Samples& samples,
                      Writer write_value) {
   auto it = std::back_inserter(*out);
-  fmt::format_to(it, "        <DataArray type=\"Float64\" Name=\"{}\" NumberOfComponents=\"{}\" "
-                     "format=\"ascii\">\n", name, components);
+  fmt::format_to(it,
+                 "        <DataArray type=\"Float64\" Name=\"{}\" NumberOfComponents=\"{}\" "
+                 "format=\"ascii\">\n",
+                 name, components);
   for (const auto& sample : samples) {
     *out += "          ";
     write_value(sample, it);
@@ -109,10 +112,11 @@ std::string VtkSeriesWriter::FormatPolyData(const Model& model) const {
   };
   std::string out;
   auto it = std::back_inserter(out);
-  out += "<?xml version=\"1.0\"?>\n"
-         "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
-         "header_type=\"UInt64\">\n"
-         "  <PolyData>\n";
+  out +=
+      "<?xml version=\"1.0\"?>\n"
+      "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
+      "header_type=\"UInt64\">\n"
+      "  <PolyData>\n";
   fmt::format_to(it,
                  "    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"0\" NumberOfLines=\"{}\" "
                  "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n",
@@ -136,18 +140,20 @@ std::string VtkSeriesWriter::FormatPolyData(const Model& model) const {
   out += "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
   for (std::size_t i = 0; i < samples_.size(); ++i)
     fmt::format_to(it, "{}{}", i % 16 == 0 ? "          " : " ", i);
-  out += "\n        </DataArray>\n"
-         "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n         ";
+  out +=
+      "\n        </DataArray>\n"
+      "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n         ";
   Index offset = 0;
   for (const Cable& cable : model.cables()) {
     offset += cable.num_elements * points_per_element_ + 1;
     fmt::format_to(it, " {}", offset);
   }
-  out += "\n        </DataArray>\n"
-         "      </Lines>\n"
-         "    </Piece>\n"
-         "  </PolyData>\n"
-         "</VTKFile>\n";
+  out +=
+      "\n        </DataArray>\n"
+      "      </Lines>\n"
+      "    </Piece>\n"
+      "  </PolyData>\n"
+      "</VTKFile>\n";
   return out;
 }
 
@@ -158,8 +164,8 @@ void VtkSeriesWriter::WriteCollection() const {
       "  <Collection>\n";
   for (const Frame& frame : frames_) {
     fmt::format_to(std::back_inserter(out),
-                   "    <DataSet timestep=\"{}\" group=\"\" part=\"0\" file=\"{}\"/>\n",
-                   frame.time, frame.file_name);
+                   "    <DataSet timestep=\"{}\" group=\"\" part=\"0\" file=\"{}\"/>\n", frame.time,
+                   frame.file_name);
   }
   out += "  </Collection>\n</VTKFile>\n";
   // Write beside the collection and rename, so a reader never sees a half-written file.

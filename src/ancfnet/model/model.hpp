@@ -87,10 +87,10 @@ struct SpringDamperLink {
 /// cables its threads, for net metrics and outputs.
 struct Net {
   std::string name;
-  std::vector<Index> knots;      ///< point masses, in the order of the net's topology
-  std::vector<Index> threads;    ///< cables
-  std::vector<Index> perimeter;  ///< point masses around the mouth, in order
-  std::vector<Index> corners;    ///< point masses
+  std::vector<Index> knots;           ///< point masses, in the order of the net's topology
+  std::vector<Index> threads;         ///< cables
+  std::vector<Index> perimeter;       ///< point masses around the mouth, in order
+  std::vector<Index> corners;         ///< point masses
   Vector3d axis = Vector3d::UnitZ();  ///< launch axis: the normal of the net's plane
 };
 

@@ -1,9 +1,10 @@
 #include "ancfnet/model/model_builder.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
-#include <fmt/format.h>
 
 #include "ancfnet/common/error.hpp"
 
@@ -12,7 +13,8 @@ namespace {
 
 void RequireFinite(const Vector3d& v, const char* what) {
   if (!v.allFinite())
-    throw InputError(fmt::format("{} must be finite (got [{}, {}, {}])", what, v.x(), v.y(), v.z()));
+    throw InputError(
+        fmt::format("{} must be finite (got [{}, {}, {}])", what, v.x(), v.y(), v.z()));
 }
 
 void RequirePositive(double value, const char* what) {
@@ -22,8 +24,7 @@ void RequirePositive(double value, const char* what) {
 
 // > 0, infinity allowed (never breaks); NaN refused.
 void RequireBreakingForce(double value, const char* what) {
-  if (!(value > 0.0))
-    throw InputError(fmt::format("{} must be > 0 (got {})", what, value));
+  if (!(value > 0.0)) throw InputError(fmt::format("{} must be > 0 (got {})", what, value));
 }
 
 void RequireNonNegative(double value, const char* what) {
@@ -66,7 +67,8 @@ void ModelBuilder::SetRayleighDamping(const RayleighDamping& damping) {
 
 void ModelBuilder::SetModalDamping(const ModalDamping& damping) {
   if (damping.num_modes < 1)
-    throw InputError(fmt::format("modal damping needs at least 1 mode (got {})", damping.num_modes));
+    throw InputError(
+        fmt::format("modal damping needs at least 1 mode (got {})", damping.num_modes));
   if (damping.ratios.empty() == damping.table.empty())
     throw InputError("modal damping needs either one ratio per mode or a table ζ(f), not both");
   if (!damping.ratios.empty() && static_cast<int>(damping.ratios.size()) != damping.num_modes)
@@ -82,7 +84,8 @@ void ModelBuilder::SetModalDamping(const ModalDamping& damping) {
     check_ratio(zeta);
     if (!(f > 0.0 && std::isfinite(f)) || (j > 0 && !(f > damping.table[j - 1].first)))
       throw InputError(fmt::format(
-          "modal damping table: frequencies must be positive and increasing (row {}: {} Hz)", j, f));
+          "modal damping table: frequencies must be positive and increasing (row {}: {} Hz)", j,
+          f));
   }
   model_.damping_.modal = damping;
 }
@@ -106,13 +109,14 @@ Index ModelBuilder::EndPositionDof(const std::string& knot, const Vector3d& posi
                                    const char* which) {
   if (knot.empty()) return AddCoordinates(position);
   const Index mass = model_.FindPointMass(knot);
-  if (mass < 0) throw InputError(fmt::format("no point mass named '{}' for the cable {}", knot, which));
+  if (mass < 0)
+    throw InputError(fmt::format("no point mass named '{}' for the cable {}", knot, which));
   const Index dof = model_.point_masses_[mass].dof;
   const Vector3d at = model_.initial_positions_.segment<3>(dof);
   if ((at - position).norm() > 1e-9 * std::max(1.0, position.norm()))
-    throw InputError(fmt::format("the cable {} [{}, {}, {}] is not at knot '{}' [{}, {}, {}]", which,
-                                 position.x(), position.y(), position.z(), knot, at.x(), at.y(),
-                                 at.z()));
+    throw InputError(fmt::format("the cable {} [{}, {}, {}] is not at knot '{}' [{}, {}, {}]",
+                                 which, position.x(), position.y(), position.z(), knot, at.x(),
+                                 at.y(), at.z()));
   return dof;
 }
 
@@ -153,9 +157,12 @@ Index ModelBuilder::AddCable(const CableSpec& spec) {
     const double s = static_cast<double>(i) / spec.num_elements;
     const Vector3d r = spec.start + s * (spec.end - spec.start);
     CableNode node;
-    if (i == 0) node.position_dof = EndPositionDof(spec.start_knot, r, "start");
-    else if (i == spec.num_elements) node.position_dof = EndPositionDof(spec.end_knot, r, "end");
-    else node.position_dof = AddCoordinates(r);
+    if (i == 0)
+      node.position_dof = EndPositionDof(spec.start_knot, r, "start");
+    else if (i == spec.num_elements)
+      node.position_dof = EndPositionDof(spec.end_knot, r, "end");
+    else
+      node.position_dof = AddCoordinates(r);
     node.slope_dof = AddCoordinates(slope);
     model_.nodes_.push_back(node);
   }
@@ -235,7 +242,8 @@ void ModelBuilder::AddRotatingClamp(const CablePointRef& at, const Vector3d& axi
   if (angle.kind == AngleProfile::Kind::kSpinUp) RequirePositive(angle.ramp_time, "spin-up time");
   AddClamp(at);
   const CableNode& node = model_.nodes_[LocateNode(at)];
-  for (const auto& [dof, direction] : {std::pair{node.position_dof, false}, {node.slope_dof, true}}) {
+  for (const auto& [dof, direction] :
+       {std::pair{node.position_dof, false}, {node.slope_dof, true}}) {
     PrescribedBlock block;
     block.kind = PrescribedBlock::Kind::kRotation;
     block.dof = dof;
@@ -250,21 +258,22 @@ void ModelBuilder::AddRotatingClamp(const CablePointRef& at, const Vector3d& axi
 
 void ModelBuilder::AddSpringDamper(const std::string& name, const CablePointRef& first,
                                    const CablePointRef& second, const ConnectionLaw& law,
-                                   std::optional<double> natural_length,
-                                   double breaking_force) {
+                                   std::optional<double> natural_length, double breaking_force) {
   ValidateConnectionLaw(law);
   RequireBreakingForce(breaking_force, "breaking force of a spring-damper");
   const auto cable_of = [&](const std::string& point) {
     return model_.FindPointMass(point) >= 0 ? Index{-1} : model_.FindCable(point);
   };
-  SpringDamperLink link{.name = name, .law = law,
+  SpringDamperLink link{.name = name,
+                        .law = law,
                         .first = model_.LocatePoint(first.cable, first.s),
                         .second = model_.LocatePoint(second.cable, second.s),
                         .first_cable = cable_of(first.cable),
                         .second_cable = cable_of(second.cable),
                         .breaking_force = breaking_force};
   const double distance = (Model::Locate(link.second, model_.initial_positions_) -
-                           Model::Locate(link.first, model_.initial_positions_)).norm();
+                           Model::Locate(link.first, model_.initial_positions_))
+                              .norm();
   link.natural_length = natural_length.value_or(distance);
   RequireNonNegative(link.natural_length, "natural length of a spring-damper");
   model_.links_.push_back(std::move(link));

@@ -1,8 +1,8 @@
 #include "ancfnet/model/net_builder.hpp"
 
-#include <cmath>
-
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "ancfnet/common/error.hpp"
 
@@ -18,11 +18,11 @@ Vector3d Centroid(const std::vector<Vector3d>& points) {
 void Validate(const NetSpec& spec) {
   if (spec.name.empty()) throw InputError("a net needs a non-empty name");
   if (spec.elements_per_thread < 1)
-    throw InputError(fmt::format("a thread needs at least 1 element (got {})",
-                                 spec.elements_per_thread));
+    throw InputError(
+        fmt::format("a thread needs at least 1 element (got {})", spec.elements_per_thread));
   if (!(spec.natural_length_ratio > 0.0))
-    throw InputError(fmt::format("natural length ratio must be > 0 (got {})",
-                                 spec.natural_length_ratio));
+    throw InputError(
+        fmt::format("natural length ratio must be > 0 (got {})", spec.natural_length_ratio));
   if (!(spec.packing_ratio > 0.0 && spec.packing_ratio <= 1.0))
     throw InputError(fmt::format("packing ratio must be in (0, 1] (got {})", spec.packing_ratio));
   if (!(spec.knot_mass >= 0.0)) throw InputError("knot mass must be ≥ 0");
@@ -42,9 +42,10 @@ void Validate(const NetSpec& spec) {
   for (const ThreadDesign& design : spec.thread_designs) {
     if (design.elements && *design.elements < 1)
       throw InputError(fmt::format("a thread needs at least 1 element (got {})", *design.elements));
-    if (design.natural_length && !(*design.natural_length > 0.0 && std::isfinite(*design.natural_length)))
-      throw InputError(fmt::format("a thread's natural length must be > 0 (got {})",
-                                   *design.natural_length));
+    if (design.natural_length &&
+        !(*design.natural_length > 0.0 && std::isfinite(*design.natural_length)))
+      throw InputError(
+          fmt::format("a thread's natural length must be > 0 (got {})", *design.natural_length));
   }
   for (const KnotMass& extra : spec.knot_masses) {
     if (extra.knot < 0 || extra.knot >= static_cast<Index>(spec.topology.knots.size()))
@@ -63,7 +64,9 @@ CableProperties MakeThreadProperties(const Material& material, const Section& se
   return p;
 }
 
-std::string KnotName(const std::string& net, Index knot) { return fmt::format("{}.k{}", net, knot); }
+std::string KnotName(const std::string& net, Index knot) {
+  return fmt::format("{}.k{}", net, knot);
+}
 
 std::string ThreadName(const std::string& net, Index thread) {
   return fmt::format("{}.t{}", net, thread);
@@ -89,13 +92,15 @@ void AddNet(ModelBuilder& builder, const NetSpec& spec) {
   net.axis = spec.axis.normalized();
   // Knot masses first: the threads are attached to them.
   for (Index i = 0; i < num_knots; ++i)
-    net.knots.push_back(builder.AddPointMass(KnotName(spec.name, i), mass[i], start[i], velocity[i]));
+    net.knots.push_back(
+        builder.AddPointMass(KnotName(spec.name, i), mass[i], start[i], velocity[i]));
 
   const bool ideal = spec.knot_model == KnotModel::kIdeal;
   for (std::size_t j = 0; j < topology.threads.size(); ++j) {
     const auto [a, b] = topology.threads[j];
     const std::string name = ThreadName(spec.name, static_cast<Index>(j));
-    const ThreadDesign design = spec.thread_designs.empty() ? ThreadDesign{} : spec.thread_designs[j];
+    const ThreadDesign design =
+        spec.thread_designs.empty() ? ThreadDesign{} : spec.thread_designs[j];
     CableSpec cable{.name = name,
                     .start = start[a],
                     .end = start[b],
@@ -113,10 +118,10 @@ void AddNet(ModelBuilder& builder, const NetSpec& spec) {
     // The thread moves with the net (the knots' own velocities are set above).
     builder.SetInitialVelocity(name, spec.velocity);
     if (!ideal) {
-      builder.AddSpringDamper(name + ".start", {KnotName(spec.name, a)}, {name, 0.0},
-                              spec.link_law, 0.0, spec.link_breaking_force);
-      builder.AddSpringDamper(name + ".end", {KnotName(spec.name, b)}, {name, 1.0},
-                              spec.link_law, 0.0, spec.link_breaking_force);
+      builder.AddSpringDamper(name + ".start", {KnotName(spec.name, a)}, {name, 0.0}, spec.link_law,
+                              0.0, spec.link_breaking_force);
+      builder.AddSpringDamper(name + ".end", {KnotName(spec.name, b)}, {name, 1.0}, spec.link_law,
+                              0.0, spec.link_breaking_force);
     }
   }
   if (spec.tether) AddNetTether(builder, spec, start, *spec.tether);

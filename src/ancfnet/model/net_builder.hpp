@@ -47,8 +47,8 @@ struct NetSpec {
   /// starts slack, < 1 pre-tensioned.
   double natural_length_ratio = 1.0;
   KnotModel knot_model = KnotModel::kIdeal;
-  double knot_mass = 0.0;          ///< kg per knot, ≥ 0 (> 0 for compliant knots)
-  ConnectionLaw link_law;          ///< compliant knots: law of each thread-end link
+  double knot_mass = 0.0;                ///< kg per knot, ≥ 0 (> 0 for compliant knots)
+  ConnectionLaw link_law;                ///< compliant knots: law of each thread-end link
   Vector3d velocity = Vector3d::Zero();  ///< initial velocity of the whole net (m/s)
   /// Packed start: knots at centroid + ratio (p − centroid), threads keeping their natural
   /// lengths (so they start slack); 1: unpacked. In (0, 1].

@@ -1,8 +1,8 @@
 #include "ancfnet/model/net_tether.hpp"
 
-#include <cmath>
-
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/model/net_builder.hpp"
@@ -43,20 +43,22 @@ void Validate(const NetSpec& net, const TetherSpec& tether) {
   if (!tether.chaser.allFinite() || !tether.chaser_velocity.allFinite())
     throw InputError("the chaser's position and velocity must be finite");
   if (!(tether.natural_length >= 0.0 && std::isfinite(tether.natural_length)))
-    throw InputError(fmt::format("tether natural length must be ≥ 0 (got {})", tether.natural_length));
+    throw InputError(
+        fmt::format("tether natural length must be ≥ 0 (got {})", tether.natural_length));
   if (tether.attachment == TetherAttachment::kBridle && net.topology.corners.empty())
     throw InputError(fmt::format("net '{}' has no corners for a bridle", net.name));
 }
 
 }  // namespace
 
-void AddNetTether(ModelBuilder& builder, const NetSpec& net, const std::vector<Vector3d>& knot_start,
-                  const TetherSpec& tether) {
+void AddNetTether(ModelBuilder& builder, const NetSpec& net,
+                  const std::vector<Vector3d>& knot_start, const TetherSpec& tether) {
   Validate(net, tether);
   const std::string chaser = net.name + ".chaser";
   builder.AddPointMass(chaser, 0.0, tether.chaser);
   builder.FixPointMass(chaser);
-  if (tether.chaser_velocity != Vector3d::Zero()) builder.MovePointMass(chaser, tether.chaser_velocity);
+  if (tether.chaser_velocity != Vector3d::Zero())
+    builder.MovePointMass(chaser, tether.chaser_velocity);
 
   Vector3d center = Vector3d::Zero();
   for (const Vector3d& p : knot_start) center += p;
@@ -84,8 +86,7 @@ void AddNetTether(ModelBuilder& builder, const NetSpec& net, const std::vector<V
         tether.bridle_length, reach));
   const Vector3d apex =
       center - std::sqrt(tether.bridle_length * tether.bridle_length - reach * reach) * axis;
-  if ((apex - tether.chaser).norm() == 0.0)
-    throw InputError("the chaser sits on the bridle apex");
+  if ((apex - tether.chaser).norm() == 0.0) throw InputError("the chaser sits on the bridle apex");
   const std::string bridle = net.name + ".bridle";
   builder.AddPointMass(bridle, 0.0, apex, net.velocity);
   builder.AddCable({.name = tether_name,

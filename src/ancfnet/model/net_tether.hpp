@@ -38,7 +38,7 @@ struct TetherSpec {
 /// "NET.bridle" with cables "NET.bridle<i>" to the corners in order. Ends meet the net as its
 /// threads do: sharing the knot's position (ideal knots) or through a zero-length link
 /// "<cable>.end" with the net's knot law (compliant knots). Throws InputError for bad values.
-void AddNetTether(ModelBuilder& builder, const NetSpec& net, const std::vector<Vector3d>& knot_start,
-                  const TetherSpec& tether);
+void AddNetTether(ModelBuilder& builder, const NetSpec& net,
+                  const std::vector<Vector3d>& knot_start, const TetherSpec& tether);
 
 }  // namespace ancfnet

@@ -24,8 +24,7 @@ class OutputWriters {
   OutputWriters(const Scene& scene, const std::filesystem::path& dir)
       : scene_(scene), csv_(dir / "probes.csv", scene.probes) {
     if (scene.output.write_vtk)
-      vtk_ = std::make_unique<VtkSeriesWriter>(dir, "cables",
-                                               scene.output.vtk_points_per_element);
+      vtk_ = std::make_unique<VtkSeriesWriter>(dir, "cables", scene.output.vtk_points_per_element);
   }
   // Writes nothing and throws SolverError when a value to be written is NaN or infinite, so
   // that the files only ever hold finite numbers. The VTK frame goes first: it checks the whole
@@ -65,9 +64,9 @@ RunSummary RunScene(const Scene& scene, const RunOptions& options) {
   const AnalysisType type = options.analysis_type.value_or(scene.analysis.type);
   const bool is_static = type == AnalysisType::kStatic;
   OutputWriters writers(scene, options.output_dir);
-  ProgressReporter progress(is_static ? "load factor" : "t =",
-                            is_static ? 1.0 : scene.analysis.dynamics.end_time,
-                            options.show_progress);
+  ProgressReporter progress(
+      is_static ? "load factor" : "t =", is_static ? 1.0 : scene.analysis.dynamics.end_time,
+      options.show_progress);
 
   State state = MakeInitialState(scene.model);
   State last_written = state;
@@ -84,10 +83,10 @@ RunSummary RunScene(const Scene& scene, const RunOptions& options) {
 
   RunSummary summary;
   summary.analysis = is_static ? "static" : "dynamic";
-  const SolveResult result =
-      is_static ? SolveStatic(scene.model, scene.analysis.statics, output, &state)
-                : SolveDynamic(scene.model, scene.analysis.dynamics, scene.output.interval,
-                               output, &state);
+  const SolveResult result = is_static
+                                 ? SolveStatic(scene.model, scene.analysis.statics, output, &state)
+                                 : SolveDynamic(scene.model, scene.analysis.dynamics,
+                                                scene.output.interval, output, &state);
   progress.Finish();
   summary.completed = result.completed;
   summary.message = result.message;

@@ -20,7 +20,8 @@ enum class JacobianUpdate {
 };
 
 enum class IntegratorType {
-  kGeneralizedAlpha,  ///< generalised-α with numerical damping ρ∞ (integrators/generalized_alpha.hpp)
+  kGeneralizedAlpha,  ///< generalised-α with numerical damping ρ∞
+                      ///< (integrators/generalized_alpha.hpp)
   kImplicitMidpoint,  ///< implicit midpoint: conserves momentum (integrators/implicit_midpoint.hpp)
   kExplicitVerlet,    ///< explicit velocity Verlet, conditionally stable
 };

@@ -1,7 +1,8 @@
 #include "ancfnet/solvers/dynamic_solver.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 
 #include "ancfnet/analysis/energy_tracker.hpp"
 #include "ancfnet/integrators/explicit_verlet.hpp"
@@ -15,23 +16,20 @@ namespace {
 constexpr int kStepsBeforeGrowth = 4;
 
 template <class Integrator>
-SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings,
-                        double output_interval, const OutputCallback& output,
-                        Integrator& integrator, State* state) {
+SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings, double output_interval,
+                        const OutputCallback& output, Integrator& integrator, State* state) {
   SolveResult result;
   if (!integrator.Initialize(state)) {
     result.completed = false;
     result.message = "the mass matrix is singular";
     return result;
   }
-  EnergyTracker energy(model, integrator.workspace(), *state, 1.0,
-                       Integrator::kEnergyQuadrature);
+  EnergyTracker energy(model, integrator.workspace(), *state, 1.0, Integrator::kEnergyQuadrature);
   energy.Advance(model, integrator.workspace(), *state, 1.0);
   if (!EmitOutput(output, *state, energy.account(), &result)) return result;
 
   const double nominal = settings.time_step;
-  const double min_step =
-      settings.min_time_step > 0.0 ? settings.min_time_step : nominal / 1024.0;
+  const double min_step = settings.min_time_step > 0.0 ? settings.min_time_step : nominal / 1024.0;
   const double end = settings.end_time;
   const double time_eps = 1e-9 * nominal;
   double step = nominal;
@@ -72,8 +70,8 @@ SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings,
         // The forces jump: restart from the consistent acceleration without the broken links.
         if (!integrator.Initialize(state)) {
           result.completed = false;
-          result.message = fmt::format("the mass matrix is singular after a failure at t = {:.9g} s",
-                                       state->t);
+          result.message =
+              fmt::format("the mass matrix is singular after a failure at t = {:.9g} s", state->t);
           return result;
         }
         energy.Release(model, integrator.workspace(), check.released_energy);
@@ -83,8 +81,8 @@ SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings,
       step = std::min(2.0 * step, nominal);
       accepted_in_a_row = 0;
     }
-    const bool at_output = output_interval <= 0.0 || state->t >= next_output - time_eps ||
-                           state->t >= end - time_eps;
+    const bool at_output =
+        output_interval <= 0.0 || state->t >= next_output - time_eps || state->t >= end - time_eps;
     if (at_output) {
       if (!EmitOutput(output, *state, energy.account(), &result)) return result;
       if (output_interval > 0.0)

@@ -1,7 +1,7 @@
 #include "ancfnet/solvers/modal.hpp"
 
-#include <Spectra/SymGEigsShiftSolver.h>
 #include <Spectra/MatOp/SparseSymMatProd.h>
+#include <Spectra/SymGEigsShiftSolver.h>
 #include <fmt/format.h>
 
 #include <Eigen/Eigenvalues>
@@ -27,8 +27,8 @@ class ShiftInvertOperator {
   void set_shift(double sigma) {
     shifted_ = k_ - sigma * m_;
     if (!solver_.Factorize(shifted_))
-      throw SolverError(fmt::format("K − σM is singular at σ = {:.6g}: choose another shift", sigma),
-                        0.0);
+      throw SolverError(
+          fmt::format("K − σM is singular at σ = {:.6g}: choose another shift", sigma), 0.0);
     x_.resize(k_.rows());
     y_.resize(k_.rows());
   }
@@ -84,11 +84,11 @@ LinearSystem Linearise(const Model& model, const DofMap& dofs, const VectorXd& q
   const VectorXd rest = VectorXd::Zero(model.num_dofs());
   CalcExternalForces(model, q, 1.0, ws);
   LinearSystem system;
-  AssembleIterationMatrix(model, q, rest, {.mass = 0.0, .damping = 0.0, .stiffness = 1.0}, 1.0,
-                          ws, &matrix);
+  AssembleIterationMatrix(model, q, rest, {.mass = 0.0, .damping = 0.0, .stiffness = 1.0}, 1.0, ws,
+                          &matrix);
   system.stiffness = 0.5 * (matrix.matrix() + SparseMatrixd(matrix.matrix().transpose()));
-  AssembleIterationMatrix(model, q, rest, {.mass = 0.0, .damping = 1.0, .stiffness = 0.0}, 1.0,
-                          ws, &matrix);
+  AssembleIterationMatrix(model, q, rest, {.mass = 0.0, .damping = 1.0, .stiffness = 0.0}, 1.0, ws,
+                          &matrix);
   if (damping) damping->AddRayleighJacobian(1.0, &matrix);
   system.damping = matrix.matrix();
   AssembleMassMatrix(model, ws, &matrix);
@@ -142,8 +142,8 @@ UndampedModes SolveUndamped(const Model& model, const DofMap& dofs, const Linear
   if (sigma == 0.0) {
     // A first pass with a shift far below any elastic eigenvalue of the model finds the lowest
     // one; the real solve then shifts to just below it, where Lanczos converges fast.
-    const Eigenpairs probe = SolveShiftInvert(system.stiffness, system.mass, 1, -1e-12 * scale,
-                                              settings.tolerance);
+    const Eigenpairs probe =
+        SolveShiftInvert(system.stiffness, system.mass, 1, -1e-12 * scale, settings.tolerance);
     const double lowest = probe.converged ? std::max(probe.values[0], 0.0) : 0.0;
     sigma = lowest > 1e-10 * scale ? -0.5 * lowest : -1e-6 * scale;
   }

@@ -20,7 +20,7 @@ struct SolveStatistics {
 struct SolveResult {
   SolveStatistics statistics;
   bool completed = true;
-  std::string message;  ///< why the analysis stopped early
+  std::string message;                 ///< why the analysis stopped early
   std::vector<FailureEvent> failures;  ///< threads and connections that broke, in time order
 };
 

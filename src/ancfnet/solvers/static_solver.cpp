@@ -13,9 +13,14 @@ namespace {
 class LoadIncrement {
  public:
   LoadIncrement(const Model& model, const NewtonSettings& newton, Workspace& ws, State& state)
-      : model_(model), newton_(newton), ws_(ws), state_(state),
-        dofs_(DofMap::FreeCoordinates(model)), matrix_(model, dofs_),
-        q_start_(state.q), residual_full_(state.q.size()) {}
+      : model_(model),
+        newton_(newton),
+        ws_(ws),
+        state_(state),
+        dofs_(DofMap::FreeCoordinates(model)),
+        matrix_(model, dofs_),
+        q_start_(state.q),
+        residual_full_(state.q.size()) {}
 
   void Begin(double load_factor) {
     load_factor_ = load_factor;

@@ -18,8 +18,8 @@ TEST(NetProbe, MaxTensionFindsTheStretchedThread) {
   spec.name = "line";
   spec.topology =
       MakeGraphNet({Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(2, 0, 0)}, {{0, 1}, {1, 2}});
-  spec.thread = MakeCableProperties({.youngs_modulus = 1e9, .density = 1000},
-                                    MakeCircleSection(0.002));
+  spec.thread =
+      MakeCableProperties({.youngs_modulus = 1e9, .density = 1000}, MakeCircleSection(0.002));
   spec.thread.tension_only = true;
   ModelBuilder builder;
   AddNet(builder, spec);
@@ -51,8 +51,8 @@ TEST(NetProbe, CentroidVelocityIsTheMeanKnotVelocity) {
   NetSpec spec;
   spec.name = "line";
   spec.topology = MakeGraphNet({Vector3d(0, 0, 0), Vector3d(1, 0, 0)}, {{0, 1}});
-  spec.thread = MakeThreadProperties({.youngs_modulus = 1e9, .density = 1000},
-                                     MakeCircleSection(0.002));
+  spec.thread =
+      MakeThreadProperties({.youngs_modulus = 1e9, .density = 1000}, MakeCircleSection(0.002));
   spec.knot_masses = {{0, 0.1, Vector3d(1, 2, 3)}, {1, 0.1, Vector3d(3, 0, -1)}};
   ModelBuilder builder;
   AddNet(builder, spec);

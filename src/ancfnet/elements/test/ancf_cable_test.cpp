@@ -77,8 +77,10 @@ void ExpectJacobiansMatchFiniteDifferences(const CableElementParameters& p, cons
     c_fd.col(j) = (Force(p, e, vp) - Force(p, e, vm)) / (2 * h);
   }
   EXPECT_LT((k - k_fd).norm(), 1e-6 * k.norm()) << "stiffness\n" << k - k_fd;
-  if (c.norm() > 0) EXPECT_LT((c - c_fd).norm(), 1e-6 * c.norm()) << "damping\n" << c - c_fd;
-  else EXPECT_LT(c_fd.norm(), 1e-9);
+  if (c.norm() > 0)
+    EXPECT_LT((c - c_fd).norm(), 1e-6 * c.norm()) << "damping\n" << c - c_fd;
+  else
+    EXPECT_LT(c_fd.norm(), 1e-9);
 }
 
 TEST(AncfCable, StiffnessMatchesFiniteDifferences) {
@@ -126,8 +128,8 @@ TEST(AncfCable, SmoothRopeLawMatchesFiniteDifferencesAndTheExactLaw) {
   const Vector12d stretched = StraightElement(Vector3d::Zero(), Vector3d::UnitX(), p.length, 1.01);
   CableElementParameters exact = p;
   exact.rope_smoothing_strain = 0.0;
-  EXPECT_NEAR(Force(p, stretched, Vector12d::Zero())[6], Force(exact, stretched, Vector12d::Zero())[6],
-              1e-7 * p.axial_stiffness);
+  EXPECT_NEAR(Force(p, stretched, Vector12d::Zero())[6],
+              Force(exact, stretched, Vector12d::Zero())[6], 1e-7 * p.axial_stiffness);
 }
 
 TEST(AncfCable, SecondDerivativeBendingMatchesFiniteDifferences) {
@@ -195,8 +197,7 @@ TEST(AncfCable, BentElementInRigidRotationDissipatesAlmostNothing) {
   Vector12d viscous;
   CalcCableInternalForce(p, e, v, {.viscous_force = &viscous});
   const double vector_rate_power = p.bending_stiffness * p.bending_damping_time *
-                                   omega.cross(Vector3d::UnitZ() / radius).squaredNorm() *
-                                   p.length;
+                                   omega.cross(Vector3d::UnitZ() / radius).squaredNorm() * p.length;
   EXPECT_LT(std::abs(viscous.dot(v)), 1e-5 * vector_rate_power);
   Vector12d bend = Vector12d::Zero();  // tip slope turning further: the curvature grows
   bend.segment<3>(9) = Vector3d(-0.2, 0.0, 0.0);
@@ -291,8 +292,7 @@ TEST(AncfCable, AxialForceIsTheDerivativeOfTheEnergyForEveryLaw) {
       EXPECT_NEAR(force * stretch * p.length, du_dlambda, 1e-6 * p.axial_stiffness * p.length)
           << "law " << law << ", stretch " << stretch;
       // Uniform strain: every Gauss point has it.
-      EXPECT_NEAR(CalcCableMaxTension(
-                      p, StraightElement(Vector3d::Zero(), dir, p.length, stretch)),
+      EXPECT_NEAR(CalcCableMaxTension(p, StraightElement(Vector3d::Zero(), dir, p.length, stretch)),
                   force, 1e-9 * p.axial_stiffness);
     }
   }

@@ -67,7 +67,8 @@ TEST(PointMassScene, ReadsEveryLawType) {
 
 TEST(PointMassScene, ReadsTheOrbitalFrame) {
   const std::string gravity = "gravity: [0, 0, 0]";
-  const Scene by_rate = ParseScene(Replace(kTwoMasses, gravity, "orbital_frame: {mean_motion: 0.001}"));
+  const Scene by_rate =
+      ParseScene(Replace(kTwoMasses, gravity, "orbital_frame: {mean_motion: 0.001}"));
   EXPECT_DOUBLE_EQ(*by_rate.model.orbital_frame(), 0.001);
   // A 400 km orbit: a = 6778.137 km, n = √(μ/a³) = 1.1313e-3 rad/s.
   const Scene by_radius =
@@ -119,11 +120,16 @@ struct BadCase {
 TEST(PointMassScene, BadInputNamesFileLineAndKey) {
   const std::string linear = "law: {type: linear, stiffness: 200, damping: 0.1}";
   const BadCase cases[] = {
-      {linear, "law: {type: linaer, stiffness: 200}", "scene.yaml:6:69: expected one of linear, tension_only, polynomial, table, got 'linaer'; "
+      {linear, "law: {type: linaer, stiffness: 200}",
+       "scene.yaml:6:69: expected one of linear, tension_only, polynomial, table, got 'linaer'; "
        "did you mean 'linear'? (key 'type')"},
-      {linear, "law: {type: linear, stiffness: -200}", "scene.yaml:6:88: expected a number > 0, got '-200' (key 'stiffness')"},
-      {linear, "law: {type: table, table: [[0, 0], [0.01]]}", "scene.yaml:6:92: expected a row [elongation, force], got a list of 1 item (key 'table[1]')"},
-      {linear, "law: {type: table, table: [[0, 0], [0, 2]]}", "scene.yaml:6:83: connection law: force table elongations must increase strictly"},
+      {linear, "law: {type: linear, stiffness: -200}",
+       "scene.yaml:6:88: expected a number > 0, got '-200' (key 'stiffness')"},
+      {linear, "law: {type: table, table: [[0, 0], [0.01]]}",
+       "scene.yaml:6:92: expected a row [elongation, force], got a list of 1 item (key "
+       "'table[1]')"},
+      {linear, "law: {type: table, table: [[0, 0], [0, 2]]}",
+       "scene.yaml:6:83: connection law: force table elongations must increase strictly"},
       {linear, "law: {type: linear, stiffness: 1, damping: 1, damping_time: 1}", "damping_time"},
       {"mass: 0.15", "mass: 0", "scene.yaml:4:22: expected a number > 0, got '0' (key 'mass')"},
       {"to: m2", "to: m3", "scene.yaml:6:"},
@@ -147,7 +153,8 @@ namespace ancfnet {
 namespace {
 
 TEST(PointMassScene, ReadsBreakingForcesAndLinkProbes) {
-  std::string text = Replace(kTwoMasses, "natural_length: 0.5,", "natural_length: 0.5, breaking_force: 3.5,");
+  std::string text =
+      Replace(kTwoMasses, "natural_length: 0.5,", "natural_length: 0.5, breaking_force: 3.5,");
   text = Replace(text, "  - {name: p2, quantity: position, at: m2}",
                  "  - {name: p2, quantity: position, at: m2}\n"
                  "  - {name: pull, quantity: link_force, link: link}");
@@ -180,7 +187,8 @@ TEST(PointMassScene, RefusesBadBreakingForcesAndUnknownLinks) {
     }
     return std::string("no error");
   };
-  EXPECT_NE(message(Replace(kTwoMasses, "natural_length: 0.5,", "natural_length: 0.5, breaking_force: -1,"))
+  EXPECT_NE(message(Replace(kTwoMasses, "natural_length: 0.5,",
+                            "natural_length: 0.5, breaking_force: -1,"))
                 .find("breaking_force"),
             std::string::npos);
   const std::string probe = Replace(kTwoMasses, "  - {name: p2, quantity: position, at: m2}",
@@ -277,7 +285,7 @@ nets:
   EXPECT_EQ(thick.num_elements, 3);
   EXPECT_NEAR(thick.properties.axial_stiffness / plain.properties.axial_stiffness, 16.0, 1e-12);
   EXPECT_TRUE(thick.properties.tension_only);  // the net's rope settings stay
-  EXPECT_DOUBLE_EQ(soft.length, 1.5);           // slack: √2 m apart
+  EXPECT_DOUBLE_EQ(soft.length, 1.5);          // slack: √2 m apart
   EXPECT_NEAR(soft.properties.axial_stiffness / plain.properties.axial_stiffness, 0.03, 1e-12);
 }
 

@@ -124,10 +124,10 @@ TEST(SceneLoaderTest, CantileverHasTheRightProbesAndSettings) {
 }
 
 TEST(SceneLoaderTest, DynamicVariantHasItsSettings) {
-  const Scene scene = ParseScene(Cantilever(
-      "analysis:\n  type: static\n  load_steps: 10\n",
-      "analysis: {type: dynamic, integrator: generalized_alpha, spectral_radius: 0.9, "
-      "time_step: 1.0e-3, end_time: 1.0}\n"));
+  const Scene scene = ParseScene(
+      Cantilever("analysis:\n  type: static\n  load_steps: 10\n",
+                 "analysis: {type: dynamic, integrator: generalized_alpha, spectral_radius: 0.9, "
+                 "time_step: 1.0e-3, end_time: 1.0}\n"));
   const DynamicSettings& dynamics = scene.analysis.dynamics;
   EXPECT_EQ(scene.analysis.type, AnalysisType::kDynamic);
   EXPECT_EQ(dynamics.integrator, IntegratorType::kGeneralizedAlpha);
@@ -216,14 +216,16 @@ cables:
 
 TEST(SceneLoaderTest, ReadsPointsConstraintsLoadsAndProbes) {
   // A cable name with a dot: the point string splits at the last one.
-  const std::string yaml = Replace(
-      Replace(Replace(Replace(kCantilever, "name: beam", "name: net.beam"), "beam.start",
-                      "net.beam.start"),
-              "  - {type: point_force, at: beam.end, force: [0, 0, -333.333]}\n", R"(  - {type: point_force, at: {cable: net.beam, s: 0.5}, force: [1, 2, 3]}
+  const std::string yaml =
+      Replace(Replace(Replace(Replace(kCantilever, "name: beam", "name: net.beam"), "beam.start",
+                              "net.beam.start"),
+                      "  - {type: point_force, at: beam.end, force: [0, 0, -333.333]}\n",
+                      R"(  - {type: point_force, at: {cable: net.beam, s: 0.5}, force: [1, 2, 3]}
   - {type: point_moment, at: net.beam.end, moment: [0, 4, 0]}
   - {type: distributed, cable: net.beam, force_per_length: [0, 0, -5]}
 )"),
-      "  - {name: tip, quantity: position, at: beam.end}\n", R"(  - {name: mid, quantity: velocity, at: {cable: net.beam, s: 0.25}}
+              "  - {name: tip, quantity: position, at: beam.end}\n",
+              R"(  - {name: mid, quantity: velocity, at: {cable: net.beam, s: 0.25}}
   - {name: e, quantity: energy}
 )");
   const std::string with_fix = Replace(yaml, "  - {type: clamp, at: net.beam.start}\n",
@@ -235,8 +237,8 @@ TEST(SceneLoaderTest, ReadsPointsConstraintsLoadsAndProbes) {
   const std::vector<bool>& fixed = model.fixed();
   EXPECT_EQ(std::count(fixed.begin(), fixed.end(), true), 5);
   for (int k = 0; k < 3; ++k) EXPECT_TRUE(fixed[k]);  // pin: r of node 0
-  EXPECT_TRUE(fixed[model.NodePositionDof(8) + 1]);           // fix y of node 8
-  EXPECT_TRUE(fixed[model.NodeSlopeDof(8) + 2]);           // fix dz of node 8
+  EXPECT_TRUE(fixed[model.NodePositionDof(8) + 1]);   // fix y of node 8
+  EXPECT_TRUE(fixed[model.NodeSlopeDof(8) + 2]);      // fix dz of node 8
 
   ASSERT_EQ(model.point_forces().size(), 1u);
   EXPECT_EQ(model.point_forces()[0].point.element, 8);
@@ -390,11 +392,11 @@ const BadScene kBadScenes[] = {
      "scene.yaml:5:40: unknown key 'width' in 'bar'; allowed keys: shape, diameter"},
     {"ZeroLengthCable", Cantilever("end: [1, 0, 0]", "end: [0, 0, 0]"),
      "scene.yaml:7:5: cable 'beam' has zero length (start equals end) (key 'cables[0]')"},
-    {"GaussPointsOutOfRange", Cantilever("    section: bar\n",
-                                         "    section: bar\n    axial_gauss_points: 9\n"),
+    {"GaussPointsOutOfRange",
+     Cantilever("    section: bar\n", "    section: bar\n    axial_gauss_points: 9\n"),
      "scene.yaml:13:25: expected an integer in [1, 8], got '9' (key 'axial_gauss_points')"},
-    {"TensionOnlyNotABool", Cantilever("    section: bar\n",
-                                       "    section: bar\n    tension_only: yes please\n"),
+    {"TensionOnlyNotABool",
+     Cantilever("    section: bar\n", "    section: bar\n    tension_only: yes please\n"),
      "scene.yaml:13:19: expected true or false, got 'yes please' (key 'tension_only')"},
     {"UnknownMaterialSuggests", Cantilever("material: steel", "material: stel"),
      "scene.yaml:11:15: no material named 'stel'; did you mean 'steel'? (key 'material')"},
@@ -405,8 +407,8 @@ const BadScene kBadScenes[] = {
      "scene.yaml:12:14: no section named 'tube'; known sections: bar (key 'section')"},
     {"UnknownCableInPoint", Cantilever("at: beam.start", "at: rope.start"),
      "scene.yaml:14:23: no cable named 'rope' (cables: beam) (key 'at')"},
-    {"UnknownCableInProbe", Cantilever("quantity: position, at: beam.end",
-                                       "quantity: position, at: rope.end"),
+    {"UnknownCableInProbe",
+     Cantilever("quantity: position, at: beam.end", "quantity: position, at: rope.end"),
      "scene.yaml:18:41: no cable named 'rope' (cables: beam) (key 'at')"},
     {"UnknownCableInDistributedLoad",
      Cantilever("{type: point_force, at: beam.end, force: [0, 0, -333.333]}",
@@ -418,16 +420,19 @@ const BadScene kBadScenes[] = {
     {"PointWithoutDot", Cantilever("at: beam.end, force", "at: beam, force"),
      "scene.yaml:16:29: expected a point CABLE.start, CABLE.end or {cable: NAME, s: FRACTION}, "
      "got 'beam' (key 'at')"},
-    {"PointFractionOutOfRange", Cantilever("at: beam.end, force", "at: {cable: beam, s: 1.5}, force"),
+    {"PointFractionOutOfRange",
+     Cantilever("at: beam.end, force", "at: {cable: beam, s: 1.5}, force"),
      "scene.yaml:16:46: expected a number in [0, 1], got '1.5' (key 's')"},
     {"ClampNotAtANode", Cantilever("at: beam.start", "at: {cable: beam, s: 0.3}"),
      "scene.yaml:14:23: s = 0.3 on cable 'beam' is not at a node (nodes are at multiples of "
      "1/16) (key 'at')"},
     {"ConstraintTypeSuggests", Cantilever("type: clamp", "type: clmap"),
-     "scene.yaml:14:12: expected one of clamp, pin, fix, rotating_clamp, got 'clmap'; did you mean 'clamp'? "
+     "scene.yaml:14:12: expected one of clamp, pin, fix, rotating_clamp, got 'clmap'; did you mean "
+     "'clamp'? "
      "(key 'type')"},
-    {"FixUnknownCoordinate", Cantilever("{type: clamp, at: beam.start}",
-                                        "{type: fix, at: beam.start, coordinates: [x, w]}"),
+    {"FixUnknownCoordinate",
+     Cantilever("{type: clamp, at: beam.start}",
+                "{type: fix, at: beam.start, coordinates: [x, w]}"),
      "scene.yaml:14:50: expected one of x, y, z, dx, dy, dz, got 'w' (key 'coordinates[1]')"},
     {"DuplicateCableName",
      Cantilever("constraints:\n",

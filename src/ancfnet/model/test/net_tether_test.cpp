@@ -20,8 +20,8 @@ NetSpec MakeSpec(KnotModel knots) {
   NetSpec spec;
   spec.name = "net";
   spec.topology = MakeGridNet({.side_u = 1.0, .side_v = 1.0, .meshes_u = 2, .meshes_v = 2});
-  spec.thread = MakeThreadProperties({.youngs_modulus = 3e9, .density = 1140},
-                                     MakeCircleSection(0.001));
+  spec.thread =
+      MakeThreadProperties({.youngs_modulus = 3e9, .density = 1140}, MakeCircleSection(0.001));
   spec.knot_model = knots;
   spec.knot_mass = 1e-3;
   spec.link_law = MakeLinearLaw(1e4);
@@ -33,8 +33,7 @@ NetSpec MakeSpec(KnotModel knots) {
 }
 
 Vector3d PositionOf(const Model& model, const std::string& point) {
-  return model.initial_positions().segment<3>(
-      model.point_masses()[model.FindPointMass(point)].dof);
+  return model.initial_positions().segment<3>(model.point_masses()[model.FindPointMass(point)].dof);
 }
 
 TEST(NetTether, CenterTetherSharesTheCentralKnotOfAnIdealNet) {
