@@ -13,6 +13,7 @@
 #include "ancfnet/analysis/energy_tracker.hpp"
 #include "ancfnet/integrators/explicit_verlet.hpp"
 #include "ancfnet/integrators/generalized_alpha.hpp"
+#include "ancfnet/integrators/implicit_midpoint.hpp"
 
 extern "C" {
 void* __libc_malloc(std::size_t size);
@@ -108,6 +109,33 @@ TEST(TimeLoopAllocation, GeneralizedAlphaWithAdaptiveJacobian) {
 
 TEST(TimeLoopAllocation, GeneralizedAlphaWithFullNewtonAndOpenMp) {
   ExpectGeneralizedAlphaLoopAllocatesNothing(JacobianUpdate::kEveryIteration, 128);
+}
+
+// The midpoint rule with Rayleigh and modal damping (their forces and the Rayleigh Jacobian every
+// step).
+TEST(TimeLoopAllocation, ImplicitMidpointWithRayleighAndModalDamping) {
+  ModelBuilder builder = verification::MakeCantilever(8);
+  builder.SetRayleighDamping({.alpha = 0.1, .beta = 1e-5});
+  ModalDamping modal;
+  modal.num_modes = 4;
+  modal.ratios = {0.01, 0.01, 0.02, 0.02};
+  builder.SetModalDamping(modal);
+  const Model model = builder.Build();
+  DynamicSettings settings;
+  ImplicitMidpointIntegrator integrator(model, settings);
+  State state = MakeInitialState(model);
+  state.v.setConstant(1e-3);
+  ASSERT_TRUE(integrator.Initialize(&state));
+  EnergyTracker energy(model, integrator.workspace(), state, 1.0,
+                       ImplicitMidpointIntegrator::kEnergyQuadrature);
+  ASSERT_TRUE(integrator.Step(1e-4, &state).accepted);
+  const long count = CountAllocations([&] {
+    for (int i = 0; i < 40; ++i) {
+      EXPECT_TRUE(integrator.Step(i % 10 < 5 ? 1e-4 : 5e-5, &state).accepted);
+      energy.Advance(model, integrator.workspace(), state, 1.0);
+    }
+  });
+  EXPECT_EQ(count, 0) << "heap requests in 40 midpoint steps with damping models";
 }
 
 TEST(TimeLoopAllocation, ExplicitVerlet) {

@@ -54,6 +54,7 @@ DampingModel::DampingModel(const Model& model) : model_(model) {
     modal_coefficients_[j] = 2.0 * modal.Ratio(j, omega / (2.0 * std::numbers::pi)) * omega;
   }
   modal_coordinates_.resize(modal.num_modes);
+  modal_force_.resize(model.num_dofs());
 }
 
 void DampingModel::AddForces(const VectorXd& v, Workspace& ws) const {
@@ -76,8 +77,9 @@ void DampingModel::AddForces(const VectorXd& v, Workspace& ws) const {
   // C v = B (d ∘ (Bᵀ v)), O(n k).
   modal_coordinates_.noalias() = modal_basis_.transpose() * v;
   modal_coordinates_.array() *= modal_coefficients_.array();
-  ws.internal_force.noalias() += modal_basis_ * modal_coordinates_;
-  ws.viscous_force.noalias() += modal_basis_ * modal_coordinates_;
+  modal_force_.noalias() = modal_basis_ * modal_coordinates_;
+  ws.internal_force += modal_force_;
+  ws.viscous_force += modal_force_;
 }
 
 void DampingModel::AddRayleighJacobian(double weight, SystemMatrix* matrix) const {

@@ -34,7 +34,8 @@ class DampingModel {
   double alpha_ = 0.0;
   MatrixXd modal_basis_;         // B = M Φ (num_dofs × k); no columns without modal damping
   VectorXd modal_coefficients_;  // 2 ζ_i ω_i (1/s)
-  mutable VectorXd modal_coordinates_;
+  mutable VectorXd modal_coordinates_;  // scratch, sized once
+  mutable VectorXd modal_force_;
 };
 
 }  // namespace ancfnet
