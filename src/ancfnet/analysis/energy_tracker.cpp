@@ -20,7 +20,7 @@ double CalcStrainEnergy(const Model& model, const Workspace& ws, const VectorXd&
   double energy = 0.0;
   for (const CableElement& element : model.elements())
     energy += CalcCableStrainEnergy(element.parameters, model.Gather(element, q));
-  return energy + CalcLinkEnergy(model, ws, q);
+  return energy + CalcLinkEnergy(model, ws, q) + ws.contact_energy;
 }
 
 EnergyTracker::EnergyTracker(const Model& model, const Workspace& ws, const State& state,

@@ -9,10 +9,15 @@
 namespace ancfnet {
 
 ExplicitVerletIntegrator::ExplicitVerletIntegrator(const Model& model)
-    : model_(model), damping_(model), ws_(model), dofs_(DofMap::FreeCoordinates(model)) {}
+    : model_(model),
+      damping_(model),
+      contact_(model),
+      ws_(model),
+      dofs_(DofMap::FreeCoordinates(model)) {}
 
 bool ExplicitVerletIntegrator::Initialize(State* state) {
   ws_.link_broken = state->link_broken;
+  contact_history_ = state->contact_history;
   SystemMatrix mass(model_, dofs_);
   AssembleMassMatrix(model_, ws_, &mass);
   if (!mass_solver_.Factorize(mass.matrix())) return false;
@@ -23,6 +28,7 @@ bool ExplicitVerletIntegrator::Initialize(State* state) {
 void ExplicitVerletIntegrator::CalcAcceleration(const VectorXd& q, const VectorXd& v, VectorXd* a) {
   CalcInternalForces(model_, q, v, ws_);
   damping_.AddForces(v, ws_);
+  if (!contact_.empty()) contact_.AddForces(q, v, contact_history_, ws_);
   CalcExternalForces(model_, q, 1.0, ws_);
   net_force_ = ws_.external_force - ws_.internal_force;
   dofs_.Restrict(net_force_, &rhs_);
@@ -49,9 +55,14 @@ StepOutcome ExplicitVerletIntegrator::Step(double h, State* state) {
                     h, EstimateCriticalStep(state->q));
     return outcome;
   }
+  if (!contact_.empty()) {
+    contact_.UpdateHistory(state->q, state->v, &state->contact_history);
+    contact_history_ = state->contact_history;
+  }
   // Viscous forces for the energy account at the full-step velocity.
   CalcInternalForces(model_, state->q, state->v, ws_);
   damping_.AddForces(state->v, ws_);
+  if (!contact_.empty()) contact_.AddForces(state->q, state->v, contact_history_, ws_);
   return outcome;
 }
 

@@ -130,6 +130,7 @@ StepOutcome GeneralizedAlphaIntegrator::Step(double h, State* state) {
     a_bar_[i] =
         ((1.0 - c.alpha_f) * state->a[i] + c.alpha_f * previous.a[i] - c.alpha_m * a_bar_[i]) /
         (1.0 - c.alpha_m);
+  core_.AcceptStep(state);
   // Forces at the accepted state, for the energy account.
   core_.CalcForces(state->q, state->v);
   return outcome;

@@ -91,6 +91,7 @@ StepOutcome ImplicitMidpointIntegrator::Step(double h, State* state) {
     state->q[i] = 2.0 * midpoint_.q[i] - previous.q[i];
     state->v[i] = 2.0 * midpoint_.v[i] - previous.v[i];
   }
+  core_.AcceptStep(state);
   // Forces at the converged midpoint, for the energy account.
   core_.CalcForces(midpoint_.q, midpoint_.v);
   return outcome;

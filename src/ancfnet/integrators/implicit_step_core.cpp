@@ -7,6 +7,7 @@ namespace ancfnet {
 ImplicitStepCore::ImplicitStepCore(const Model& model, const DynamicSettings& settings)
     : model_(model),
       damping_(model),
+      contact_(model),
       ws_(model),
       dofs_(DofMap::FreeCoordinates(model)),
       iteration_matrix_(model, dofs_),
@@ -32,6 +33,7 @@ void ImplicitStepCore::BeginStep(double h, const State& state) {
   previous_.q = state.q;
   previous_.v = state.v;
   previous_.a = state.a;
+  previous_.contact_history = state.contact_history;
   if (h != last_h_) newton_.InvalidateJacobian();
   last_h_ = h;
 }
@@ -48,14 +50,22 @@ const SparseMatrixd& ImplicitStepCore::CalcIterationMatrix(const VectorXd& q, co
                                                            const IterationWeights& weights) {
   AssembleIterationMatrix(model_, q, v, weights, 1.0, ws_, &iteration_matrix_);
   damping_.AddRayleighJacobian(weights.damping, &iteration_matrix_);
+  if (!contact_.empty())
+    contact_.AddJacobian(q, v, previous_.contact_history, weights, &iteration_matrix_);
   damping_.AddForces(v, ws_);  // the forces AssembleIterationMatrix leaves, completed
+  if (!contact_.empty()) contact_.AddForces(q, v, previous_.contact_history, ws_);
   return iteration_matrix_.matrix();
 }
 
 void ImplicitStepCore::CalcForces(const VectorXd& q, const VectorXd& v) {
   CalcInternalForces(model_, q, v, ws_);
   damping_.AddForces(v, ws_);
+  if (!contact_.empty()) contact_.AddForces(q, v, previous_.contact_history, ws_);
   CalcExternalForces(model_, q, 1.0, ws_);
+}
+
+void ImplicitStepCore::AcceptStep(State* state) const {
+  if (!contact_.empty()) contact_.UpdateHistory(state->q, state->v, &state->contact_history);
 }
 
 double ImplicitStepCore::IncrementNorm(const VectorXd& da, const VectorXd& q, double scale) const {

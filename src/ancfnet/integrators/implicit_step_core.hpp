@@ -5,6 +5,7 @@
 
 #include "ancfnet/assembly/forces.hpp"
 #include "ancfnet/forces/damping_model.hpp"
+#include "ancfnet/forces/target_contact.hpp"
 #include "ancfnet/solvers/analysis_settings.hpp"
 #include "ancfnet/solvers/newton.hpp"
 #include "ancfnet/solvers/solve_result.hpp"
@@ -19,9 +20,11 @@ class ImplicitStepCore {
   /// Takes over the state's broken links, drops the stored Jacobian (also after a failure) and
   /// sets the consistent acceleration a = M⁻¹ (Q_ext − Q_int). False when M is singular.
   bool Initialize(State* state);
-  /// Saves the state at t_n; drops the factorisation when h changed (the iteration matrix
-  /// depends on h).
+  /// Saves the state at t_n (its contact history included); drops the factorisation when h
+  /// changed (the iteration matrix depends on h).
   void BeginStep(double h, const State& state);
+  /// After a converged step: the contact history at the new state.
+  void AcceptStep(State* state) const;
   /// Newton iterations on `problem` with the shared solver.
   template <class Problem>
   NewtonResult Solve(Problem& problem) {
@@ -47,6 +50,7 @@ class ImplicitStepCore {
  private:
   const Model& model_;
   DampingModel damping_;
+  TargetContact contact_;
   Workspace ws_;
   DofMap dofs_;
   SystemMatrix iteration_matrix_;

@@ -15,6 +15,7 @@
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/io/closest_name.hpp"
 #include "ancfnet/io/connection_law_reader.hpp"
+#include "ancfnet/io/contact_reader.hpp"
 #include "ancfnet/io/damping_reader.hpp"
 #include "ancfnet/io/net_reader.hpp"
 #include "ancfnet/io/scene_library.hpp"
@@ -319,8 +320,8 @@ Scene ReadScene(const YamlValue& root) {
     root.FailPlain("the scene is empty (expected a map with materials, sections and cables)");
   const YamlMap scene = root.AsMap();
   scene.CheckKeys({"gravity", "orbital_frame", "materials", "sections", "point_masses", "nets",
-                   "cables", "spring_dampers", "constraints", "loads", "damping", "probes",
-                   "analysis", "output"});
+                   "cables", "spring_dampers", "constraints", "loads", "damping", "contact",
+                   "probes", "analysis", "output"});
   ModelBuilder builder;
   if (auto v = scene.Find("gravity")) {
     const Vector3d gravity = v->AsVector3();
@@ -346,6 +347,7 @@ Scene ReadScene(const YamlValue& root) {
   if (auto v = scene.Find("loads"))
     for (const YamlValue& item : v->AsList()) ReadLoad(item, &builder);
   if (auto v = scene.Find("damping")) ReadDamping(*v, &builder);
+  if (auto v = scene.Find("contact")) ReadContact(*v, &builder);
 
   Scene result;
   result.model = root.Locate([&] { return builder.Build(); });

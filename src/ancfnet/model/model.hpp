@@ -11,6 +11,7 @@
 #include "ancfnet/common/types.hpp"
 #include "ancfnet/elements/ancf_cable.hpp"
 #include "ancfnet/forces/connection_law.hpp"
+#include "ancfnet/model/contact_spec.hpp"
 #include "ancfnet/model/damping_spec.hpp"
 #include "ancfnet/model/material.hpp"
 #include "ancfnet/model/prescribed_motion.hpp"
@@ -136,6 +137,8 @@ class Model {
   const std::optional<double>& orbital_frame() const { return orbital_frame_; }
   /// Rayleigh and modal damping of the whole model (forces/damping_model.hpp).
   const DampingSpec& damping() const { return damping_; }
+  /// Contact with rigid targets (forces/target_contact.hpp).
+  const ContactSpec& contact() const { return contact_; }
   /// Fixed coordinates that move: chasers, hubs (model/prescribed_motion.hpp).
   const std::vector<PrescribedBlock>& prescribed() const { return prescribed_; }
   /// Per coordinate: true when fixed (eliminated from the unknowns).
@@ -182,6 +185,7 @@ class Model {
   Vector3d gravity_ = Vector3d::Zero();
   std::optional<double> orbital_frame_;
   DampingSpec damping_;
+  ContactSpec contact_;
   std::vector<bool> fixed_;
   std::vector<PrescribedBlock> prescribed_;
   VectorXd initial_positions_;

@@ -90,6 +90,45 @@ void ModelBuilder::SetModalDamping(const ModalDamping& damping) {
   model_.damping_.modal = damping;
 }
 
+void ModelBuilder::SetContact(const ContactSpec& contact) {
+  ValidateNormalLaw(contact.normal);
+  if (contact.friction) ValidateFrictionLaw(*contact.friction);
+  if (contact.friction && contact.friction->kind == FrictionLawKind::kLuGre)
+    throw InputError("contact friction: the bristle (LuGre) law is not available for contact yet");
+  if (contact.points_per_element < 0 || contact.points_per_element > 1000)
+    throw InputError("contact: points_per_element must be 0 (automatic) … 1000");
+  RequireNonNegative(contact.cable_radius, "contact cable radius");
+  RequireNonNegative(contact.point_mass_radius, "contact point mass radius");
+  for (const ContactTarget& t : contact.targets) {
+    RequireFinite(t.point, "contact target position");
+    switch (t.kind) {
+      case ContactTarget::Kind::kPlane:
+      case ContactTarget::Kind::kCylinder:
+        if (std::abs(t.normal.norm() - 1.0) > 1e-6)
+          throw InputError(fmt::format("contact target '{}': its normal or axis must be a unit "
+                                       "vector",
+                                       t.name));
+        if (t.kind == ContactTarget::Kind::kCylinder) {
+          RequirePositive(t.radius, "cylinder radius");
+          RequirePositive(t.half_length, "cylinder half length");
+        }
+        break;
+      case ContactTarget::Kind::kSphere:
+        RequirePositive(t.radius, "sphere radius");
+        break;
+      case ContactTarget::Kind::kBox:
+        for (int k = 0; k < 3; ++k) RequirePositive(t.half_extents[k], "box half extent");
+        if (!(t.rotation.transpose() * t.rotation).isIdentity(1e-6))
+          throw InputError(fmt::format("contact target '{}': not a rotation matrix", t.name));
+        break;
+    }
+  }
+  model_.contact_ = contact;
+  for (ContactTarget& t : model_.contact_.targets)
+    if (t.kind == ContactTarget::Kind::kPlane || t.kind == ContactTarget::Kind::kCylinder)
+      t.normal.normalize();
+}
+
 void ModelBuilder::SetOrbitalFrame(double mean_motion) {
   RequirePositive(mean_motion, "orbital mean motion");
   model_.orbital_frame_ = mean_motion;

@@ -55,6 +55,9 @@ class ModelBuilder {
   /// Modal damping of the lowest elastic modes (num_modes ≥ 1; ratios in [0, 1), one per mode,
   /// or a table of ≥ 1 (frequency > 0 Hz, ratio) pairs with increasing frequencies).
   void SetModalDamping(const ModalDamping& damping);
+  /// Contact of every cable and point mass with rigid targets (unit normals and axes, positive
+  /// radii and extents, a valid law). Replaces an earlier setting.
+  void SetContact(const ContactSpec& contact);
   /// Adds a cable; returns its index. Names must be unique and non-empty.
   Index AddCable(const CableSpec& spec);
   /// Adds a point mass m ≥ 0 (kg) at `position` (m) moving at `velocity` (m/s); returns its

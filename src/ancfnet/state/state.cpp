@@ -1,5 +1,6 @@
 #include "ancfnet/state/state.hpp"
 
+#include "ancfnet/forces/target_contact.hpp"
 #include "ancfnet/model/model.hpp"
 
 namespace ancfnet {
@@ -10,6 +11,7 @@ State MakeInitialState(const Model& model) {
   state.v = model.initial_velocities();
   state.a = VectorXd::Zero(model.num_dofs());
   state.link_broken.assign(model.links().size(), 0);
+  state.contact_history.assign(static_cast<std::size_t>(CountContactPairs(model)), 0.0);
   return state;
 }
 

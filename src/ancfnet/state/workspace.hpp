@@ -27,6 +27,8 @@ struct Workspace {
   // Copied from State::link_broken by the integrators before they evaluate forces; the force,
   // Jacobian and energy of a broken link are skipped.
   std::vector<char> link_broken;
+  /// Elastic energy stored in the contacts (J): set by the contact forces (TargetContact).
+  double contact_energy = 0.0;
 
   // Global coordinate vectors (all coordinates, fixed included).
   VectorXd internal_force;  ///< Q_int(q, v): CalcInternalForces

@@ -1,0 +1,243 @@
+#include "ancfnet/forces/target_contact.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "ancfnet/contact/distance/point_box.hpp"
+#include "ancfnet/contact/distance/point_cylinder.hpp"
+#include "ancfnet/contact/distance/point_plane.hpp"
+#include "ancfnet/contact/distance/point_sphere.hpp"
+#include "ancfnet/contact/laws/tangential_friction.hpp"
+#include "ancfnet/elements/hermite_shape.hpp"
+
+namespace ancfnet {
+namespace {
+
+// Signed distance of a point to a target's surface, its outward normal and ∂n/∂x.
+struct Gap {
+  double distance = 0.0;
+  Vector3d normal = Vector3d::UnitZ();
+  Matrix3d hessian = Matrix3d::Zero();
+};
+
+Gap CalcGap(const ContactTarget& t, const Vector3d& x) {
+  switch (t.kind) {
+    case ContactTarget::Kind::kPlane: {
+      const PointPlaneDistance d = CalcPointPlaneDistance(x, t.point, t.normal);
+      return {d.distance, d.gradient_p, Matrix3d::Zero()};
+    }
+    case ContactTarget::Kind::kSphere: {
+      const PointSphereDistance d = CalcPointSphereDistance(x, t.point, t.radius);
+      return {d.distance, d.normal, d.hessian};
+    }
+    case ContactTarget::Kind::kBox: {
+      const PointBoxDistance d = CalcPointBoxDistance(x, t.point, t.half_extents, t.rotation);
+      return {d.distance, d.normal, d.hessian};
+    }
+    case ContactTarget::Kind::kCylinder: {
+      const PointCylinderDistance d =
+          CalcPointCylinderDistance(x, t.point, t.normal, t.radius, t.half_length);
+      return {d.distance, d.normal, d.hessian};
+    }
+  }
+  return {};
+}
+
+// Automatic inspection spheres per element: one per diameter of length, 2 … 32.
+int PointsPerElement(const ContactSpec& spec, double length, double radius) {
+  if (spec.points_per_element > 0) return spec.points_per_element;
+  const double per_diameter = radius > 0.0 ? length / (2.0 * radius) : 2.0;
+  return static_cast<int>(std::clamp(std::ceil(per_diameter), 2.0, 32.0));
+}
+
+}  // namespace
+
+std::vector<ContactProbe> MakeContactProbes(const Model& model) {
+  const ContactSpec& spec = model.contact();
+  std::vector<ContactProbe> probes;
+  if (!spec.enabled()) return probes;
+  const auto& elements = model.elements();
+  for (std::size_t e = 0; e < elements.size(); ++e) {
+    const CableElementParameters& p = elements[e].parameters;
+    const double radius = spec.cable_radius > 0.0
+                              ? spec.cable_radius
+                              : model.cables()[elements[e].cable].properties.radius;
+    const int n = PointsPerElement(spec, p.length, radius);
+    for (int j = 0; j < n; ++j) {
+      ContactProbe probe;
+      probe.element = static_cast<Index>(e);
+      probe.xi = (j + 0.5) / n;
+      probe.shape = CalcHermiteShape(probe.xi, p.length).s;
+      probe.radius = radius;
+      probes.push_back(probe);
+    }
+  }
+  for (std::size_t i = 0; i < model.point_masses().size(); ++i) {
+    ContactProbe probe;
+    probe.point_mass = static_cast<Index>(i);
+    probe.radius = spec.point_mass_radius;
+    probes.push_back(probe);
+  }
+  return probes;
+}
+
+Index CountContactPairs(const Model& model) {
+  return static_cast<Index>(MakeContactProbes(model).size() * model.contact().targets.size());
+}
+
+TargetContact::TargetContact(const Model& model)
+    : model_(model), probes_(MakeContactProbes(model)) {}
+
+void TargetContact::Locate(const ContactProbe& probe, const VectorXd& q, const VectorXd& v,
+                           Vector3d* x, Vector3d* x_dot) const {
+  if (probe.element < 0) {
+    const Index dof = model_.point_masses()[probe.point_mass].dof;
+    *x = q.segment<3>(dof);
+    *x_dot = v.segment<3>(dof);
+    return;
+  }
+  const CableElement& element = model_.elements()[probe.element];
+  x->setZero();
+  x_dot->setZero();
+  for (int k = 0; k < 4; ++k) {
+    const Index dof = element.dofs[3 * k];
+    *x += probe.shape[k] * q.segment<3>(dof);
+    *x_dot += probe.shape[k] * v.segment<3>(dof);
+  }
+}
+
+TargetContact::PairForce TargetContact::CalcPairForce(const ContactTarget& target,
+                                                      const ContactProbe& probe,
+                                                      const Vector3d& x, const Vector3d& x_dot,
+                                                      double approach_speed,
+                                                      bool with_jacobian) const {
+  PairForce r;
+  const Gap gap = CalcGap(target, x);
+  const double penetration = probe.radius - gap.distance;
+  if (!(penetration > 0.0)) return r;
+  const Vector3d& n = gap.normal;
+  r.touching = true;
+  r.penetration = penetration;
+  r.rate = -n.dot(x_dot);  // δ̇ > 0 approaching
+  const ContactSpec& spec = model_.contact();
+  const double v0 = approach_speed > 0.0 ? approach_speed : std::max(r.rate, 0.0);
+  const NormalForce normal = spec.normal.Evaluate(penetration, r.rate, v0);
+  r.normal_force = normal.force;
+  r.energy = spec.normal.CalcElasticEnergy(penetration);
+  r.force = normal.force * n;
+  r.dissipative = (normal.force - normal.elastic_force) * n;
+  // ∂δ/∂x = −nᵀ, ∂δ̇/∂x = −ẋᵀ H, ∂δ̇/∂ẋ = −nᵀ, ∂n/∂x = H.
+  const Eigen::RowVector3d dF_dx =
+      -normal.dforce_ddelta * n.transpose() - normal.dforce_ddelta_dot * (gap.hessian * x_dot).transpose();
+  const Eigen::RowVector3d dF_dv = -normal.dforce_ddelta_dot * n.transpose();
+  if (with_jacobian) {
+    r.dforce_dx = n * dF_dx + normal.force * gap.hessian;
+    r.dforce_dv = n * dF_dv;
+  }
+  if (spec.friction && normal.force > 0.0) {
+    const Matrix3d tangent = Matrix3d::Identity() - n * n.transpose();
+    const TangentialFriction f = CalcTangentialFriction(*spec.friction, tangent * x_dot, normal.force);
+    r.force += f.force;
+    r.dissipative += f.force;
+    if (with_jacobian) {
+      r.dforce_dv += f.dforce_dvelocity * tangent + f.dforce_dnormal * dF_dv;
+      r.dforce_dx += f.dforce_dnormal * dF_dx;
+    }
+  }
+  return r;
+}
+
+void TargetContact::AddForces(const VectorXd& q, const VectorXd& v,
+                              const std::vector<double>& history, Workspace& ws) const {
+  ws.contact_energy = 0.0;
+  const auto& targets = model_.contact().targets;
+  for (std::size_t p = 0; p < probes_.size(); ++p) {
+    const ContactProbe& probe = probes_[p];
+    Vector3d x, x_dot;
+    Locate(probe, q, v, &x, &x_dot);
+    for (std::size_t t = 0; t < targets.size(); ++t) {
+      const PairForce f =
+          CalcPairForce(targets[t], probe, x, x_dot, history[p * targets.size() + t], false);
+      if (!f.touching) continue;
+      ws.contact_energy += f.energy;
+      if (probe.element < 0) {
+        const Index dof = model_.point_masses()[probe.point_mass].dof;
+        ws.internal_force.segment<3>(dof) -= f.force;
+        ws.viscous_force.segment<3>(dof) -= f.dissipative;
+        continue;
+      }
+      const CableElement& element = model_.elements()[probe.element];
+      for (int k = 0; k < 4; ++k) {
+        const Index dof = element.dofs[3 * k];
+        ws.internal_force.segment<3>(dof) -= probe.shape[k] * f.force;
+        ws.viscous_force.segment<3>(dof) -= probe.shape[k] * f.dissipative;
+      }
+    }
+  }
+}
+
+void TargetContact::AddJacobian(const VectorXd& q, const VectorXd& v,
+                                const std::vector<double>& history,
+                                const IterationWeights& weights, SystemMatrix* matrix) const {
+  const auto& targets = model_.contact().targets;
+  for (std::size_t p = 0; p < probes_.size(); ++p) {
+    const ContactProbe& probe = probes_[p];
+    Vector3d x, x_dot;
+    Locate(probe, q, v, &x, &x_dot);
+    for (std::size_t t = 0; t < targets.size(); ++t) {
+      const PairForce f =
+          CalcPairForce(targets[t], probe, x, x_dot, history[p * targets.size() + t], true);
+      if (!f.touching) continue;
+      // Q = −Sᵀ f: ∂Q/∂e = −Sᵀ (∂f/∂x) S.
+      const Matrix3d block = -(weights.stiffness * f.dforce_dx + weights.damping * f.dforce_dv);
+      if (probe.element < 0) {
+        matrix->AddPointMassBlock(probe.point_mass, block);
+        continue;
+      }
+      Matrix12d element_block = Matrix12d::Zero();
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+          element_block.block<3, 3>(3 * i, 3 * j) = probe.shape[i] * probe.shape[j] * block;
+      matrix->AddElementBlock(probe.element, element_block);
+    }
+  }
+}
+
+void TargetContact::UpdateHistory(const VectorXd& q, const VectorXd& v,
+                                  std::vector<double>* history) const {
+  const auto& targets = model_.contact().targets;
+  for (std::size_t p = 0; p < probes_.size(); ++p) {
+    Vector3d x, x_dot;
+    Locate(probes_[p], q, v, &x, &x_dot);
+    for (std::size_t t = 0; t < targets.size(); ++t) {
+      double& stored = (*history)[p * targets.size() + t];
+      const Gap gap = CalcGap(targets[t], x);
+      if (!(probes_[p].radius - gap.distance > 0.0)) {
+        stored = 0.0;
+      } else if (stored == 0.0) {
+        stored = std::max(-gap.normal.dot(x_dot), model_.contact().normal.min_approach_speed);
+      }
+    }
+  }
+}
+
+TargetContact::Summary TargetContact::Summarize(const VectorXd& q, const VectorXd& v,
+                                                const std::vector<double>& history) const {
+  Summary s;
+  const auto& targets = model_.contact().targets;
+  for (std::size_t p = 0; p < probes_.size(); ++p) {
+    Vector3d x, x_dot;
+    Locate(probes_[p], q, v, &x, &x_dot);
+    for (std::size_t t = 0; t < targets.size(); ++t) {
+      const PairForce f =
+          CalcPairForce(targets[t], probes_[p], x, x_dot, history[p * targets.size() + t], false);
+      if (!f.touching) continue;
+      ++s.active;
+      s.normal_force += f.normal_force;
+      s.max_penetration = std::max(s.max_penetration, f.penetration);
+    }
+  }
+  return s;
+}
+
+}  // namespace ancfnet

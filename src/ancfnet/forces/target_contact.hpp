@@ -1,0 +1,77 @@
+#pragma once
+/// @file Contact forces between the model (cable inspection spheres, point-mass spheres) and its
+/// rigid targets (model/contact_spec.hpp): a normal law on the penetration δ and its rate,
+/// regularised friction on the tangential slip, applied at the inspection point's material
+/// coordinate and mapped to positions and slopes by Q = Sᵀ(ξ) f, with the Jacobians an implicit
+/// integrator needs (docs/theory.md, "Contact with rigid targets").
+
+#include <vector>
+
+#include "ancfnet/assembly/forces.hpp"
+#include "ancfnet/model/model.hpp"
+#include "ancfnet/state/workspace.hpp"
+
+namespace ancfnet {
+
+/// An inspection sphere: a material point of a cable element, or a point mass.
+struct ContactProbe {
+  Index element = -1;     ///< cable element, or −1 for a point mass
+  Index point_mass = -1;  ///< point mass, or −1
+  double xi = 0.0;        ///< ξ ∈ (0, 1) on the element
+  Vector4d shape = Vector4d::Zero();  ///< S₁ … S₄ at ξ (r = Σ S_k e_k)
+  double radius = 0.0;    ///< m
+};
+
+/// The inspection spheres of the model in order: for each cable element its points at
+/// ξ = (j + ½)/n, then one per point mass. Empty without contact targets.
+std::vector<ContactProbe> MakeContactProbes(const Model& model);
+
+/// Number of (probe, target) pairs: the size of State::contact_history.
+Index CountContactPairs(const Model& model);
+
+class TargetContact {
+ public:
+  explicit TargetContact(const Model& model);
+  bool empty() const { return probes_.empty(); }
+
+  /// ws.internal_force −= Sᵀ f and ws.viscous_force −= Sᵀ f_dissipative for every touching pair;
+  /// ws.contact_energy = Σ ∫ F_elastic dδ. `history` holds each pair's approach speed at first
+  /// touch (0: not touching at the last accepted state; the current rate is then used).
+  void AddForces(const VectorXd& q, const VectorXd& v, const std::vector<double>& history,
+                 Workspace& ws) const;
+  /// matrix += c_K ∂Q/∂q + c_C ∂Q/∂q̇ of the contact forces. Left out: the friction force's
+  /// dependence on the positions through the tangent plane.
+  void AddJacobian(const VectorXd& q, const VectorXd& v, const std::vector<double>& history,
+                   const IterationWeights& weights, SystemMatrix* matrix) const;
+  /// After an accepted step: a pair that touches keeps its stored approach speed (or stores the
+  /// current one when it has just touched); a pair apart is reset to 0.
+  void UpdateHistory(const VectorXd& q, const VectorXd& v, std::vector<double>* history) const;
+
+  /// Number of touching pairs, total normal force (N) and largest penetration (m) at (q, v).
+  struct Summary {
+    int active = 0;
+    double normal_force = 0.0;
+    double max_penetration = 0.0;
+  };
+  Summary Summarize(const VectorXd& q, const VectorXd& v, const std::vector<double>& history) const;
+
+ private:
+  // One pair's force and its derivatives with respect to the probe's position and velocity.
+  struct PairForce {
+    bool touching = false;
+    double penetration = 0.0, rate = 0.0, normal_force = 0.0, energy = 0.0;
+    Vector3d force = Vector3d::Zero();        // f on the probe (N)
+    Vector3d dissipative = Vector3d::Zero();  // its damping and friction part
+    Matrix3d dforce_dx = Matrix3d::Zero(), dforce_dv = Matrix3d::Zero();
+  };
+  PairForce CalcPairForce(const ContactTarget& target, const ContactProbe& probe,
+                          const Vector3d& x, const Vector3d& x_dot, double approach_speed,
+                          bool with_jacobian) const;
+  void Locate(const ContactProbe& probe, const VectorXd& q, const VectorXd& v, Vector3d* x,
+              Vector3d* x_dot) const;
+
+  const Model& model_;
+  std::vector<ContactProbe> probes_;
+};
+
+}  // namespace ancfnet

@@ -1,0 +1,116 @@
+#include "ancfnet/io/contact_reader.hpp"
+
+namespace ancfnet {
+namespace {
+
+NormalLaw ReadNormalLaw(const YamlValue& value) {
+  const YamlMap map = value.AsMap();
+  const std::size_t type = map.Get("type").AsChoice(
+      {"linear", "hertz", "hunt_crossley", "lankarani_nikravesh", "flores", "gonthier",
+       "carvalho_martins"});
+  if (type == 0) {
+    map.CheckKeys({"type", "stiffness", "damping"});
+    const double damping = map.Find("damping") ? map.Get("damping").AsNonNegative() : 0.0;
+    return value.Locate(
+        [&] { return MakeLinearContactLaw(map.Get("stiffness").AsPositive(), damping); });
+  }
+  const double exponent = map.Find("exponent") ? map.Get("exponent").AsPositive() : 1.5;
+  if (type == 1) {
+    map.CheckKeys({"type", "stiffness", "exponent"});
+    return value.Locate(
+        [&] { return MakeHertzContactLaw(map.Get("stiffness").AsPositive(), exponent); });
+  }
+  map.CheckKeys({"type", "stiffness", "restitution", "exponent", "min_approach_speed"});
+  constexpr NormalLawKind kKinds[] = {NormalLawKind::kHuntCrossley,
+                                      NormalLawKind::kLankaraniNikravesh, NormalLawKind::kFlores,
+                                      NormalLawKind::kGonthier, NormalLawKind::kCarvalhoMartins};
+  const double speed =
+      map.Find("min_approach_speed") ? map.Get("min_approach_speed").AsPositive() : 1e-3;
+  const double stiffness = map.Get("stiffness").AsPositive();
+  const double restitution = map.Get("restitution").AsNumberIn(1e-6, 1.0);
+  return value.Locate([&] {
+    return MakeDissipativeContactLaw(kKinds[type - 2], stiffness, restitution, exponent, speed);
+  });
+}
+
+FrictionLaw ReadFriction(const YamlValue& value) {
+  const YamlMap map = value.AsMap();
+  if (map.Get("type").AsChoice({"tanh", "ambrosio"}) == 0) {
+    map.CheckKeys({"type", "static", "kinetic", "regularization_speed", "stribeck_speed"});
+    const double kinetic = map.Get("kinetic").AsNonNegative();
+    const double statics = map.Find("static") ? map.Get("static").AsNonNegative() : kinetic;
+    const double regularization =
+        map.Find("regularization_speed") ? map.Get("regularization_speed").AsPositive() : 1e-3;
+    const double stribeck =
+        map.Find("stribeck_speed") ? map.Get("stribeck_speed").AsPositive() : 1e-2;
+    return value.Locate(
+        [&] { return MakeTanhFriction(statics, kinetic, regularization, stribeck); });
+  }
+  map.CheckKeys({"type", "coefficient", "ramp_start_speed", "ramp_end_speed"});
+  const double coefficient = map.Get("coefficient").AsNonNegative();
+  const double start =
+      map.Find("ramp_start_speed") ? map.Get("ramp_start_speed").AsNonNegative() : 1e-4;
+  const double end = map.Find("ramp_end_speed") ? map.Get("ramp_end_speed").AsPositive() : 1e-3;
+  return value.Locate([&] { return MakeAmbrosioFriction(coefficient, start, end); });
+}
+
+ContactTarget ReadTarget(const YamlValue& value) {
+  const YamlMap map = value.AsMap();
+  ContactTarget t;
+  const std::size_t type = map.Get("type").AsChoice({"plane", "sphere", "box", "cylinder"});
+  t.name = map.Find("name") ? map.Get("name").AsString() : std::string("target");
+  switch (type) {
+    case 0:
+      map.CheckKeys({"name", "type", "point", "normal"});
+      t.kind = ContactTarget::Kind::kPlane;
+      t.point = map.Get("point").AsVector3();
+      t.normal = map.Get("normal").AsVector3();
+      if (!(t.normal.norm() > 0.0)) map.Get("normal").Fail("the normal must be a non-zero vector");
+      t.normal.normalize();
+      break;
+    case 1:
+      map.CheckKeys({"name", "type", "center", "radius"});
+      t.kind = ContactTarget::Kind::kSphere;
+      t.point = map.Get("center").AsVector3();
+      t.radius = map.Get("radius").AsPositive();
+      break;
+    case 2:
+      map.CheckKeys({"name", "type", "center", "half_extents"});
+      t.kind = ContactTarget::Kind::kBox;
+      t.point = map.Get("center").AsVector3();
+      t.half_extents = map.Get("half_extents").AsVector3();
+      if (!(t.half_extents.minCoeff() > 0.0))
+        map.Get("half_extents").Fail("half extents must be > 0");
+      break;
+    default:
+      map.CheckKeys({"name", "type", "center", "axis", "radius", "half_length"});
+      t.kind = ContactTarget::Kind::kCylinder;
+      t.point = map.Get("center").AsVector3();
+      t.normal = map.Find("axis") ? map.Get("axis").AsVector3() : Vector3d::UnitZ();
+      if (!(t.normal.norm() > 0.0)) map.Get("axis").Fail("the axis must be a non-zero vector");
+      t.normal.normalize();
+      t.radius = map.Get("radius").AsPositive();
+      t.half_length = map.Get("half_length").AsPositive();
+      break;
+  }
+  return t;
+}
+
+}  // namespace
+
+void ReadContact(const YamlValue& value, ModelBuilder* builder) {
+  const YamlMap map = value.AsMap();
+  map.CheckKeys({"law", "friction", "cable_radius", "point_mass_radius", "points_per_element",
+                 "targets"});
+  ContactSpec spec;
+  spec.normal = ReadNormalLaw(map.Get("law"));
+  if (auto v = map.Find("friction")) spec.friction = ReadFriction(*v);
+  if (auto v = map.Find("cable_radius")) spec.cable_radius = v->AsPositive();
+  if (auto v = map.Find("point_mass_radius")) spec.point_mass_radius = v->AsNonNegative();
+  if (auto v = map.Find("points_per_element")) spec.points_per_element = v->AsInt(1, 1000);
+  for (const YamlValue& target : map.Get("targets").AsList(true))
+    spec.targets.push_back(ReadTarget(target));
+  value.Locate([&] { builder->SetContact(spec); });
+}
+
+}  // namespace ancfnet

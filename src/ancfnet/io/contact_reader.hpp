@@ -1,0 +1,21 @@
+#pragma once
+/// @file Reads the `contact` map of a scene (model/contact_spec.hpp):
+///   law: {type: linear, stiffness, damping} | {type: hertz, stiffness, exponent}
+///      | {type: hunt_crossley | lankarani_nikravesh | flores | gonthier | carvalho_martins,
+///         stiffness, restitution, exponent, min_approach_speed}
+///   friction: {type: tanh, static, kinetic, regularization_speed, stribeck_speed}
+///           | {type: ambrosio, coefficient, ramp_start_speed, ramp_end_speed}
+///   cable_radius, point_mass_radius, points_per_element,
+///   targets: [{name, type: plane, point, normal} | {name, type: sphere, center, radius}
+///             | {name, type: box, center, half_extents} | {name, type: cylinder, center, axis,
+///             radius, half_length}]
+
+#include "ancfnet/io/yaml_reader.hpp"
+#include "ancfnet/model/model_builder.hpp"
+
+namespace ancfnet {
+
+/// Sets the model's contact; InputError with file, line and key on any mistake.
+void ReadContact(const YamlValue& value, ModelBuilder* builder);
+
+}  // namespace ancfnet

@@ -1,0 +1,43 @@
+#pragma once
+/// @file Contact of the model's cables and point masses with rigid, fixed targets (a plane, a
+/// sphere, a box, a cylinder): the description. The forces are made by
+/// forces/target_contact.hpp. Cables are probed by inspection spheres of the thread's radius at
+/// points along each element's centre line; point masses are spheres.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ancfnet/common/types.hpp"
+#include "ancfnet/contact/laws/friction_law.hpp"
+#include "ancfnet/contact/laws/normal_law.hpp"
+
+namespace ancfnet {
+
+/// A rigid, fixed target.
+struct ContactTarget {
+  enum class Kind { kPlane, kSphere, kBox, kCylinder };
+  Kind kind = Kind::kPlane;
+  std::string name;
+  Vector3d point = Vector3d::Zero();      ///< plane: a point of it; others: the centre (m)
+  Vector3d normal = Vector3d::UnitZ();    ///< plane: outward unit normal; cylinder: unit axis
+  double radius = 0.0;                    ///< sphere, cylinder (m)
+  double half_length = 0.0;               ///< cylinder (m)
+  Vector3d half_extents = Vector3d::Zero();  ///< box (m)
+  Matrix3d rotation = Matrix3d::Identity();  ///< box: R_WB
+};
+
+struct ContactSpec {
+  std::vector<ContactTarget> targets;
+  NormalLaw normal;
+  std::optional<FrictionLaw> friction;  ///< regularised laws (Ambrósio, tanh); none: frictionless
+  /// Inspection spheres per cable element, at ξ = (j + ½)/n; 0: automatic, one per thread
+  /// diameter of element length, between 2 and 32.
+  int points_per_element = 0;
+  /// Radius of the inspection spheres (m); 0: each cable's own section radius.
+  double cable_radius = 0.0;
+  double point_mass_radius = 0.0;  ///< m, ≥ 0
+  bool enabled() const { return !targets.empty(); }
+};
+
+}  // namespace ancfnet
