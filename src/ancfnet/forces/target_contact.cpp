@@ -120,7 +120,9 @@ TargetContact::PairForce TargetContact::CalcPairForce(const ContactTarget& targe
   r.penetration = penetration;
   r.rate = -n.dot(x_dot);  // δ̇ > 0 approaching
   const ContactSpec& spec = model_.contact();
-  const double v0 = approach_speed > 0.0 ? approach_speed : std::max(r.rate, 0.0);
+  // history > 0: the impact speed frozen at first touch; ≤ 0: apart at the last accepted
+  // state, closing at −history (a constant through this step's Newton iterations).
+  const double v0 = std::abs(approach_speed);
   const NormalForce normal = spec.normal.Evaluate(penetration, r.rate, v0);
   r.normal_force = normal.force;
   r.energy = spec.normal.CalcElasticEnergy(penetration);
@@ -212,10 +214,12 @@ void TargetContact::UpdateHistory(const VectorXd& q, const VectorXd& v,
     for (std::size_t t = 0; t < targets.size(); ++t) {
       double& stored = (*history)[p * targets.size() + t];
       const Gap gap = CalcGap(targets[t], x);
+      const double closing = std::max(-gap.normal.dot(x_dot), 0.0);
       if (!(probes_[p].radius - gap.distance > 0.0)) {
-        stored = 0.0;
-      } else if (stored == 0.0) {
-        stored = std::max(-gap.normal.dot(x_dot), model_.contact().normal.min_approach_speed);
+        stored = -closing;  // apart: remember how fast it closes in
+      } else if (stored <= 0.0) {
+        // Just touched: its impact speed is the closing speed before the touch.
+        stored = std::max(std::max(-stored, closing), model_.contact().normal.min_approach_speed);
       }
     }
   }

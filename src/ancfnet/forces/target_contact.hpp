@@ -35,16 +35,18 @@ class TargetContact {
   bool empty() const { return probes_.empty(); }
 
   /// ws.internal_force −= Sᵀ f and ws.viscous_force −= Sᵀ f_dissipative for every touching pair;
-  /// ws.contact_energy = Σ ∫ F_elastic dδ. `history` holds each pair's approach speed at first
-  /// touch (0: not touching at the last accepted state; the current rate is then used).
+  /// ws.contact_energy = Σ ∫ F_elastic dδ. `history` holds each pair's impact speed v₀ (> 0,
+  /// frozen while it touches), or minus its closing speed while apart (≤ 0), which is the v₀ of
+  /// a pair that touches during the step.
   void AddForces(const VectorXd& q, const VectorXd& v, const std::vector<double>& history,
                  Workspace& ws) const;
   /// matrix += c_K ∂Q/∂q + c_C ∂Q/∂q̇ of the contact forces. Left out: the friction force's
   /// dependence on the positions through the tangent plane.
   void AddJacobian(const VectorXd& q, const VectorXd& v, const std::vector<double>& history,
                    const IterationWeights& weights, SystemMatrix* matrix) const;
-  /// After an accepted step: a pair that touches keeps its stored approach speed (or stores the
-  /// current one when it has just touched); a pair apart is reset to 0.
+  /// After an accepted step: a pair apart stores minus its closing speed; a pair that has just
+  /// touched freezes its impact speed (the larger of the closing speeds before and now, at least
+  /// the law's minimum); a pair in contact keeps it.
   void UpdateHistory(const VectorXd& q, const VectorXd& v, std::vector<double>* history) const;
 
   /// Number of touching pairs, total normal force (N) and largest penetration (m) at (q, v).

@@ -20,8 +20,8 @@ struct State {
   /// Per spring-damper link of the model: 1 once it has failed (its tension passed its
   /// breaking force, or that of the cable it holds); it then carries no force.
   std::vector<char> link_broken;
-  /// Per (contact probe, target) pair: the approach speed (m/s) stored when it first touched,
-  /// 0 while apart (forces/target_contact.hpp).
+  /// Per (contact probe, target) pair: its impact speed (m/s, > 0) while it touches, minus its
+  /// closing speed while apart (forces/target_contact.hpp).
   std::vector<double> contact_history;
 };
 

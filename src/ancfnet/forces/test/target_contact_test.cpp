@@ -1,0 +1,88 @@
+// The contact forces with rigid targets: the Jacobians of the generalised forces against central
+// differences, for a bent cable pressed into a sphere and a box (inspection spheres between the
+// nodes, so the slopes take part) and for a point mass on a plane, with friction.
+
+#include "ancfnet/forces/target_contact.hpp"
+
+#include <gtest/gtest.h>
+
+#include "ancfnet/model/model_builder.hpp"
+
+namespace ancfnet {
+namespace {
+
+Model MakePressedCable(ContactTarget target, bool friction) {
+  Material nylon{.youngs_modulus = 3e9, .density = 1140};
+  ModelBuilder builder;
+  builder.AddCable({.name = "rope",
+                    .start = Vector3d(-0.2, 0.01, 0.299),
+                    .end = Vector3d(0.2, -0.02, 0.2985),
+                    .num_elements = 2,
+                    .properties = MakeCableProperties(nylon, MakeCircleSection(0.004))});
+  builder.AddPointMass("bead", 0.01, Vector3d(0.05, 0.02, 0.3009));
+  ContactSpec spec;
+  spec.normal = MakeDissipativeContactLaw(NormalLawKind::kCarvalhoMartins, 1e6, 0.4);
+  if (friction) spec.friction = MakeTanhFriction(0.4, 0.3, 1e-2, 1e-1);
+  spec.points_per_element = 5;
+  spec.point_mass_radius = 0.002;
+  spec.targets.push_back(target);
+  builder.SetContact(spec);
+  return builder.Build();
+}
+
+// With friction on a curved target the stiffness leaves out the turning of the tangent plane, so
+// `check_stiffness` is false there.
+void ExpectJacobiansMatchFiniteDifferences(const Model& model, bool check_stiffness = true) {
+  const TargetContact contact(model);
+  VectorXd q = model.initial_positions();
+  VectorXd v = VectorXd::Zero(model.num_dofs());
+  for (Index i = 0; i < v.size(); ++i) v[i] = 0.01 * std::sin(1.7 * i + 0.3);
+  std::vector<double> history(static_cast<std::size_t>(CountContactPairs(model)), 0.0);
+  for (std::size_t i = 0; i < history.size(); ++i) history[i] = i % 2 ? 0.5 : -0.3;
+  const auto forces = [&](const VectorXd& x, const VectorXd& x_dot) {
+    Workspace ws(model);
+    ws.internal_force.setZero();
+    ws.viscous_force.setZero();
+    contact.AddForces(x, x_dot, history, ws);
+    return VectorXd(ws.internal_force);
+  };
+  ASSERT_GE(contact.Summarize(q, v, history).active, 2);
+  const DofMap all = DofMap::AllCoordinates(model);
+  for (const IterationWeights weights : {IterationWeights{.mass = 0, .damping = 0, .stiffness = 1},
+                                         IterationWeights{.mass = 0, .damping = 1, .stiffness = 0}}) {
+    if (weights.stiffness != 0.0 && !check_stiffness) continue;
+    SystemMatrix matrix(model, all);
+    matrix.SetZero();
+    contact.AddJacobian(q, v, history, weights, &matrix);
+    const MatrixXd analytic = MatrixXd(matrix.matrix());
+    const double h = 1e-8;
+    for (Index j = 0; j < model.num_dofs(); ++j) {
+      VectorXd qp = q, qm = q, vp = v, vm = v;
+      if (weights.stiffness != 0.0) qp[j] += h, qm[j] -= h;
+      else vp[j] += h, vm[j] -= h;
+      const VectorXd fd = (forces(qp, vp) - forces(qm, vm)) / (2 * h);
+      EXPECT_LT((analytic.col(j) - fd).norm(), 2e-5 * analytic.norm() + 1e-9)
+          << (weights.stiffness != 0.0 ? "stiffness" : "damping") << ", column " << j;
+    }
+  }
+}
+
+TEST(TargetContact, JacobiansMatchFiniteDifferencesOnASphere) {
+  ContactTarget sphere;
+  sphere.kind = ContactTarget::Kind::kSphere;
+  sphere.radius = 0.3;
+  ExpectJacobiansMatchFiniteDifferences(MakePressedCable(sphere, false));
+  // With friction only the velocity Jacobian is exact on a curved target (the turning of the
+  // tangent plane with the position is left out of the stiffness).
+  ExpectJacobiansMatchFiniteDifferences(MakePressedCable(sphere, true), false);
+}
+
+TEST(TargetContact, JacobiansMatchFiniteDifferencesOnAPlane) {
+  ContactTarget plane;
+  plane.point = Vector3d(0, 0, 0.3);
+  plane.normal = Vector3d(0.1, 0.0, 1.0).normalized();
+  ExpectJacobiansMatchFiniteDifferences(MakePressedCable(plane, true));
+}
+
+}  // namespace
+}  // namespace ancfnet
