@@ -4,12 +4,13 @@
 // an incline slides at g (sin θ − μ_k cos θ) and holds below the friction angle; a rope dropped
 // on a plane comes to rest on it without sinking in.
 
+#include "ancfnet/forces/target_contact.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <numbers>
 
-#include "ancfnet/forces/target_contact.hpp"
 #include "ancfnet/model/model_builder.hpp"
 #include "ancfnet/solvers/dynamic_solver.hpp"
 
@@ -76,9 +77,9 @@ Impact Strike(const NormalLaw& law) {
 }
 
 TEST(TargetContact, RestitutionOfEachDissipativeLawThroughTheSolver) {
-  for (NormalLawKind kind : {NormalLawKind::kHuntCrossley, NormalLawKind::kLankaraniNikravesh,
-                             NormalLawKind::kFlores, NormalLawKind::kGonthier,
-                             NormalLawKind::kCarvalhoMartins}) {
+  for (NormalLawKind kind :
+       {NormalLawKind::kHuntCrossley, NormalLawKind::kLankaraniNikravesh, NormalLawKind::kFlores,
+        NormalLawKind::kGonthier, NormalLawKind::kCarvalhoMartins}) {
     for (double e : {0.3, 0.6, 0.9}) {
       const NormalLaw law = MakeDissipativeContactLaw(kind, 1e7, e);
       const Impact impact = Strike(law);
@@ -109,8 +110,8 @@ TEST(TargetContact, HertzImpactDurationAndDepth) {
 double SlopeSpeed(double theta_degrees, double time) {
   const double theta = theta_degrees * std::numbers::pi / 180.0;
   const Vector3d normal(-std::sin(theta), 0.0, std::cos(theta));
-  ContactSpec spec = PlaneContact(MakeDissipativeContactLaw(NormalLawKind::kCarvalhoMartins, 1e7, 0.3),
-                                  normal);
+  ContactSpec spec =
+      PlaneContact(MakeDissipativeContactLaw(NormalLawKind::kCarvalhoMartins, 1e7, 0.3), normal);
   spec.friction = MakeTanhFriction(0.4, 0.3, 1e-4, 1e-2);
   ModelBuilder builder;
   builder.SetGravity(Vector3d(0, 0, -9.81));
@@ -123,7 +124,8 @@ double SlopeSpeed(double theta_degrees, double time) {
   settings.time_step = 1e-4;
   settings.end_time = time;
   State state = MakeInitialState(model);
-  const SolveResult result = SolveDynamic(model, settings, 0.0, [](const State&, const EnergyAccount&) {}, &state);
+  const SolveResult result = SolveDynamic(
+      model, settings, 0.0, [](const State&, const EnergyAccount&) {}, &state);
   EXPECT_TRUE(result.completed) << result.message;
   const Vector3d down_slope(-std::cos(theta), 0.0, -std::sin(theta));
   return state.v.segment<3>(0).dot(down_slope);
@@ -143,14 +145,20 @@ TEST(TargetContact, BlockOnAnInclineSlidesAtTheCoulombRateAndHoldsBelowIt) {
 // A 1 m rope (2 mm, 10 elements, inspection spheres of its radius) dropped flat from 5 mm above
 // a plane under gravity comes to rest on it: no sphere sinks in by more than a tenth of the radius.
 TEST(TargetContact, RopeDroppedOnAPlaneRestsOnIt) {
-  Material nylon{.youngs_modulus = 3e9, .density = 1140, .axial_damping_time = 1e-3,
+  Material nylon{.youngs_modulus = 3e9,
+                 .density = 1140,
+                 .axial_damping_time = 1e-3,
                  .bending_damping_time = 1e-3};
   CableProperties p = MakeCableProperties(nylon, MakeCircleSection(0.002));
   ModelBuilder builder;
   builder.SetGravity(Vector3d(0, 0, -9.81));
-  builder.AddCable({.name = "rope", .start = Vector3d(0, 0, 0.006), .end = Vector3d(1, 0, 0.006),
-                    .num_elements = 10, .properties = p});
-  ContactSpec spec = PlaneContact(MakeDissipativeContactLaw(NormalLawKind::kCarvalhoMartins, 1e6, 0.3));
+  builder.AddCable({.name = "rope",
+                    .start = Vector3d(0, 0, 0.006),
+                    .end = Vector3d(1, 0, 0.006),
+                    .num_elements = 10,
+                    .properties = p});
+  ContactSpec spec =
+      PlaneContact(MakeDissipativeContactLaw(NormalLawKind::kCarvalhoMartins, 1e6, 0.3));
   spec.friction = MakeTanhFriction(0.3, 0.3, 1e-3, 1e-2);
   builder.SetContact(spec);
   const Model model = builder.Build();
@@ -158,7 +166,8 @@ TEST(TargetContact, RopeDroppedOnAPlaneRestsOnIt) {
   settings.time_step = 1e-4;
   settings.end_time = 0.3;
   State state = MakeInitialState(model);
-  const SolveResult result = SolveDynamic(model, settings, 0.0, [](const State&, const EnergyAccount&) {}, &state);
+  const SolveResult result = SolveDynamic(
+      model, settings, 0.0, [](const State&, const EnergyAccount&) {}, &state);
   ASSERT_TRUE(result.completed) << result.message;
   const TargetContact contact(model);
   const TargetContact::Summary s = contact.Summarize(state.q, state.v, state.contact_history);

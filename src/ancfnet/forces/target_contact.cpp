@@ -107,9 +107,8 @@ void TargetContact::Locate(const ContactProbe& probe, const VectorXd& q, const V
 }
 
 TargetContact::PairForce TargetContact::CalcPairForce(const ContactTarget& target,
-                                                      const ContactProbe& probe,
-                                                      const Vector3d& x, const Vector3d& x_dot,
-                                                      double approach_speed,
+                                                      const ContactProbe& probe, const Vector3d& x,
+                                                      const Vector3d& x_dot, double approach_speed,
                                                       bool with_jacobian) const {
   PairForce r;
   const Gap gap = CalcGap(target, x);
@@ -129,8 +128,8 @@ TargetContact::PairForce TargetContact::CalcPairForce(const ContactTarget& targe
   r.force = normal.force * n;
   r.dissipative = (normal.force - normal.elastic_force) * n;
   // ∂δ/∂x = −nᵀ, ∂δ̇/∂x = −ẋᵀ H, ∂δ̇/∂ẋ = −nᵀ, ∂n/∂x = H.
-  const Eigen::RowVector3d dF_dx =
-      -normal.dforce_ddelta * n.transpose() - normal.dforce_ddelta_dot * (gap.hessian * x_dot).transpose();
+  const Eigen::RowVector3d dF_dx = -normal.dforce_ddelta * n.transpose() -
+                                   normal.dforce_ddelta_dot * (gap.hessian * x_dot).transpose();
   const Eigen::RowVector3d dF_dv = -normal.dforce_ddelta_dot * n.transpose();
   if (with_jacobian) {
     r.dforce_dx = n * dF_dx + normal.force * gap.hessian;
@@ -138,7 +137,8 @@ TargetContact::PairForce TargetContact::CalcPairForce(const ContactTarget& targe
   }
   if (spec.friction && normal.force > 0.0) {
     const Matrix3d tangent = Matrix3d::Identity() - n * n.transpose();
-    const TangentialFriction f = CalcTangentialFriction(*spec.friction, tangent * x_dot, normal.force);
+    const TangentialFriction f =
+        CalcTangentialFriction(*spec.friction, tangent * x_dot, normal.force);
     r.force += f.force;
     r.dissipative += f.force;
     if (with_jacobian) {
@@ -149,60 +149,58 @@ TargetContact::PairForce TargetContact::CalcPairForce(const ContactTarget& targe
   return r;
 }
 
-void TargetContact::AddForces(const VectorXd& q, const VectorXd& v,
-                              const std::vector<double>& history, Workspace& ws) const {
-  ws.contact_energy = 0.0;
+template <class Visit>
+void TargetContact::ForEachTouchingPair(const VectorXd& q, const VectorXd& v,
+                                        const std::vector<double>& history, bool with_jacobian,
+                                        Visit&& visit) const {
   const auto& targets = model_.contact().targets;
   for (std::size_t p = 0; p < probes_.size(); ++p) {
-    const ContactProbe& probe = probes_[p];
     Vector3d x, x_dot;
-    Locate(probe, q, v, &x, &x_dot);
+    Locate(probes_[p], q, v, &x, &x_dot);
     for (std::size_t t = 0; t < targets.size(); ++t) {
-      const PairForce f =
-          CalcPairForce(targets[t], probe, x, x_dot, history[p * targets.size() + t], false);
-      if (!f.touching) continue;
-      ws.contact_energy += f.energy;
-      if (probe.element < 0) {
-        const Index dof = model_.point_masses()[probe.point_mass].dof;
-        ws.internal_force.segment<3>(dof) -= f.force;
-        ws.viscous_force.segment<3>(dof) -= f.dissipative;
-        continue;
-      }
-      const CableElement& element = model_.elements()[probe.element];
-      for (int k = 0; k < 4; ++k) {
-        const Index dof = element.dofs[3 * k];
-        ws.internal_force.segment<3>(dof) -= probe.shape[k] * f.force;
-        ws.viscous_force.segment<3>(dof) -= probe.shape[k] * f.dissipative;
-      }
+      const PairForce f = CalcPairForce(targets[t], probes_[p], x, x_dot,
+                                        history[p * targets.size() + t], with_jacobian);
+      if (f.touching) visit(probes_[p], f);
     }
   }
 }
 
-void TargetContact::AddJacobian(const VectorXd& q, const VectorXd& v,
-                                const std::vector<double>& history,
-                                const IterationWeights& weights, SystemMatrix* matrix) const {
-  const auto& targets = model_.contact().targets;
-  for (std::size_t p = 0; p < probes_.size(); ++p) {
-    const ContactProbe& probe = probes_[p];
-    Vector3d x, x_dot;
-    Locate(probe, q, v, &x, &x_dot);
-    for (std::size_t t = 0; t < targets.size(); ++t) {
-      const PairForce f =
-          CalcPairForce(targets[t], probe, x, x_dot, history[p * targets.size() + t], true);
-      if (!f.touching) continue;
-      // Q = −Sᵀ f: ∂Q/∂e = −Sᵀ (∂f/∂x) S.
-      const Matrix3d block = -(weights.stiffness * f.dforce_dx + weights.damping * f.dforce_dv);
-      if (probe.element < 0) {
-        matrix->AddPointMassBlock(probe.point_mass, block);
-        continue;
-      }
-      Matrix12d element_block = Matrix12d::Zero();
-      for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 4; ++j)
-          element_block.block<3, 3>(3 * i, 3 * j) = probe.shape[i] * probe.shape[j] * block;
-      matrix->AddElementBlock(probe.element, element_block);
+void TargetContact::AddForces(const VectorXd& q, const VectorXd& v,
+                              const std::vector<double>& history, Workspace& ws) const {
+  ws.contact_energy = 0.0;
+  ForEachTouchingPair(q, v, history, false, [&](const ContactProbe& probe, const PairForce& f) {
+    ws.contact_energy += f.energy;
+    if (probe.element < 0) {
+      const Index dof = model_.point_masses()[probe.point_mass].dof;
+      ws.internal_force.segment<3>(dof) -= f.force;
+      ws.viscous_force.segment<3>(dof) -= f.dissipative;
+      return;
     }
-  }
+    const CableElement& element = model_.elements()[probe.element];
+    for (int k = 0; k < 4; ++k) {
+      const Index dof = element.dofs[3 * k];
+      ws.internal_force.segment<3>(dof) -= probe.shape[k] * f.force;
+      ws.viscous_force.segment<3>(dof) -= probe.shape[k] * f.dissipative;
+    }
+  });
+}
+
+void TargetContact::AddJacobian(const VectorXd& q, const VectorXd& v,
+                                const std::vector<double>& history, const IterationWeights& weights,
+                                SystemMatrix* matrix) const {
+  ForEachTouchingPair(q, v, history, true, [&](const ContactProbe& probe, const PairForce& f) {
+    // Q = −Sᵀ f: ∂Q/∂e = −Sᵀ (∂f/∂x) S.
+    const Matrix3d block = -(weights.stiffness * f.dforce_dx + weights.damping * f.dforce_dv);
+    if (probe.element < 0) {
+      matrix->AddPointMassBlock(probe.point_mass, block);
+      return;
+    }
+    Matrix12d element_block;
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        element_block.block<3, 3>(3 * i, 3 * j) = probe.shape[i] * probe.shape[j] * block;
+    matrix->AddElementBlock(probe.element, element_block);
+  });
 }
 
 void TargetContact::UpdateHistory(const VectorXd& q, const VectorXd& v,
@@ -228,19 +226,11 @@ void TargetContact::UpdateHistory(const VectorXd& q, const VectorXd& v,
 TargetContact::Summary TargetContact::Summarize(const VectorXd& q, const VectorXd& v,
                                                 const std::vector<double>& history) const {
   Summary s;
-  const auto& targets = model_.contact().targets;
-  for (std::size_t p = 0; p < probes_.size(); ++p) {
-    Vector3d x, x_dot;
-    Locate(probes_[p], q, v, &x, &x_dot);
-    for (std::size_t t = 0; t < targets.size(); ++t) {
-      const PairForce f =
-          CalcPairForce(targets[t], probes_[p], x, x_dot, history[p * targets.size() + t], false);
-      if (!f.touching) continue;
-      ++s.active;
-      s.normal_force += f.normal_force;
-      s.max_penetration = std::max(s.max_penetration, f.penetration);
-    }
-  }
+  ForEachTouchingPair(q, v, history, false, [&](const ContactProbe&, const PairForce& f) {
+    ++s.active;
+    s.normal_force += f.normal_force;
+    s.max_penetration = std::max(s.max_penetration, f.penetration);
+  });
   return s;
 }
 

@@ -15,11 +15,11 @@ namespace ancfnet {
 
 /// An inspection sphere: a material point of a cable element, or a point mass.
 struct ContactProbe {
-  Index element = -1;     ///< cable element, or −1 for a point mass
-  Index point_mass = -1;  ///< point mass, or −1
-  double xi = 0.0;        ///< ξ ∈ (0, 1) on the element
+  Index element = -1;                 ///< cable element, or −1 for a point mass
+  Index point_mass = -1;              ///< point mass, or −1
+  double xi = 0.0;                    ///< ξ ∈ (0, 1) on the element
   Vector4d shape = Vector4d::Zero();  ///< S₁ … S₄ at ξ (r = Σ S_k e_k)
-  double radius = 0.0;    ///< m
+  double radius = 0.0;                ///< m
 };
 
 /// The inspection spheres of the model in order: for each cable element its points at
@@ -66,11 +66,14 @@ class TargetContact {
     Vector3d dissipative = Vector3d::Zero();  // its damping and friction part
     Matrix3d dforce_dx = Matrix3d::Zero(), dforce_dv = Matrix3d::Zero();
   };
-  PairForce CalcPairForce(const ContactTarget& target, const ContactProbe& probe,
-                          const Vector3d& x, const Vector3d& x_dot, double approach_speed,
-                          bool with_jacobian) const;
+  PairForce CalcPairForce(const ContactTarget& target, const ContactProbe& probe, const Vector3d& x,
+                          const Vector3d& x_dot, double approach_speed, bool with_jacobian) const;
   void Locate(const ContactProbe& probe, const VectorXd& q, const VectorXd& v, Vector3d* x,
               Vector3d* x_dot) const;
+  // Calls visit(probe, force) for every touching (probe, target) pair at (q, v).
+  template <class Visit>
+  void ForEachTouchingPair(const VectorXd& q, const VectorXd& v, const std::vector<double>& history,
+                           bool with_jacobian, Visit&& visit) const;
 
   const Model& model_;
   std::vector<ContactProbe> probes_;

@@ -5,9 +5,9 @@ namespace {
 
 NormalLaw ReadNormalLaw(const YamlValue& value) {
   const YamlMap map = value.AsMap();
-  const std::size_t type = map.Get("type").AsChoice(
-      {"linear", "hertz", "hunt_crossley", "lankarani_nikravesh", "flores", "gonthier",
-       "carvalho_martins"});
+  const std::size_t type =
+      map.Get("type").AsChoice({"linear", "hertz", "hunt_crossley", "lankarani_nikravesh", "flores",
+                                "gonthier", "carvalho_martins"});
   if (type == 0) {
     map.CheckKeys({"type", "stiffness", "damping"});
     const double damping = map.Find("damping") ? map.Get("damping").AsNonNegative() : 0.0;
@@ -100,8 +100,8 @@ ContactTarget ReadTarget(const YamlValue& value) {
 
 void ReadContact(const YamlValue& value, ModelBuilder* builder) {
   const YamlMap map = value.AsMap();
-  map.CheckKeys({"law", "friction", "cable_radius", "point_mass_radius", "points_per_element",
-                 "targets"});
+  map.CheckKeys(
+      {"law", "friction", "cable_radius", "point_mass_radius", "points_per_element", "targets"});
   ContactSpec spec;
   spec.normal = ReadNormalLaw(map.Get("law"));
   if (auto v = map.Find("friction")) spec.friction = ReadFriction(*v);

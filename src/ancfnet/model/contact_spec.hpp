@@ -19,10 +19,10 @@ struct ContactTarget {
   enum class Kind { kPlane, kSphere, kBox, kCylinder };
   Kind kind = Kind::kPlane;
   std::string name;
-  Vector3d point = Vector3d::Zero();      ///< plane: a point of it; others: the centre (m)
-  Vector3d normal = Vector3d::UnitZ();    ///< plane: outward unit normal; cylinder: unit axis
-  double radius = 0.0;                    ///< sphere, cylinder (m)
-  double half_length = 0.0;               ///< cylinder (m)
+  Vector3d point = Vector3d::Zero();         ///< plane: a point of it; others: the centre (m)
+  Vector3d normal = Vector3d::UnitZ();       ///< plane: outward unit normal; cylinder: unit axis
+  double radius = 0.0;                       ///< sphere, cylinder (m)
+  double half_length = 0.0;                  ///< cylinder (m)
   Vector3d half_extents = Vector3d::Zero();  ///< box (m)
   Matrix3d rotation = Matrix3d::Identity();  ///< box: R_WB
 };

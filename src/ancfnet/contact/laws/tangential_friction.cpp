@@ -8,8 +8,8 @@ TangentialFriction CalcTangentialFriction(const FrictionLaw& law, const Vector3d
                                           double normal_force) {
   if (law.kind == FrictionLawKind::kLuGre)
     throw std::logic_error("CalcTangentialFriction: the LuGre law keeps a bristle state");
-  const double scale = law.kind == FrictionLawKind::kTanh ? law.regularization_speed
-                                                          : law.ramp_end_speed;
+  const double scale =
+      law.kind == FrictionLawKind::kTanh ? law.regularization_speed : law.ramp_end_speed;
   const double speed = v_t.norm();
   TangentialFriction result;
   if (speed <= 1e-12 * scale) {

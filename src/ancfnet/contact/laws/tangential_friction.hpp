@@ -10,7 +10,7 @@ namespace ancfnet {
 
 /// A tangential friction force and its derivatives.
 struct TangentialFriction {
-  Vector3d force = Vector3d::Zero();            ///< f_t (N), opposing v_t
+  Vector3d force = Vector3d::Zero();             ///< f_t (N), opposing v_t
   Matrix3d dforce_dvelocity = Matrix3d::Zero();  ///< ∂f_t/∂v_t (N s/m)
   Vector3d dforce_dnormal = Vector3d::Zero();    ///< ∂f_t/∂N (–)
 };

@@ -37,13 +37,14 @@ TEST(TangentialFriction, JacobianMatchesFiniteDifferences) {
         vp[k] += h;
         vm[k] -= h;
         const Vector3d fd = (CalcTangentialFriction(law, vp, 5.0).force -
-                             CalcTangentialFriction(law, vm, 5.0).force) / (2 * h);
-        EXPECT_LT((f.dforce_dvelocity.col(k) - fd).norm(),
-                  1e-6 * f.dforce_dvelocity.norm() + 1e-9)
+                             CalcTangentialFriction(law, vm, 5.0).force) /
+                            (2 * h);
+        EXPECT_LT((f.dforce_dvelocity.col(k) - fd).norm(), 1e-6 * f.dforce_dvelocity.norm() + 1e-9)
             << "v = " << v.transpose() << ", column " << k;
       }
       const Vector3d fd_n = (CalcTangentialFriction(law, v, 5.0 + 1e-6).force -
-                             CalcTangentialFriction(law, v, 5.0 - 1e-6).force) / 2e-6;
+                             CalcTangentialFriction(law, v, 5.0 - 1e-6).force) /
+                            2e-6;
       EXPECT_LT((f.dforce_dnormal - fd_n).norm(), 1e-6 * (fd_n.norm() + 1e-12));
     }
   }

@@ -48,8 +48,9 @@ void ExpectJacobiansMatchFiniteDifferences(const Model& model, bool check_stiffn
   };
   ASSERT_GE(contact.Summarize(q, v, history).active, 2);
   const DofMap all = DofMap::AllCoordinates(model);
-  for (const IterationWeights weights : {IterationWeights{.mass = 0, .damping = 0, .stiffness = 1},
-                                         IterationWeights{.mass = 0, .damping = 1, .stiffness = 0}}) {
+  for (const IterationWeights weights :
+       {IterationWeights{.mass = 0, .damping = 0, .stiffness = 1},
+        IterationWeights{.mass = 0, .damping = 1, .stiffness = 0}}) {
     if (weights.stiffness != 0.0 && !check_stiffness) continue;
     SystemMatrix matrix(model, all);
     matrix.SetZero();
@@ -58,8 +59,10 @@ void ExpectJacobiansMatchFiniteDifferences(const Model& model, bool check_stiffn
     const double h = 1e-8;
     for (Index j = 0; j < model.num_dofs(); ++j) {
       VectorXd qp = q, qm = q, vp = v, vm = v;
-      if (weights.stiffness != 0.0) qp[j] += h, qm[j] -= h;
-      else vp[j] += h, vm[j] -= h;
+      if (weights.stiffness != 0.0)
+        qp[j] += h, qm[j] -= h;
+      else
+        vp[j] += h, vm[j] -= h;
       const VectorXd fd = (forces(qp, vp) - forces(qm, vm)) / (2 * h);
       EXPECT_LT((analytic.col(j) - fd).norm(), 2e-5 * analytic.norm() + 1e-9)
           << (weights.stiffness != 0.0 ? "stiffness" : "damping") << ", column " << j;
