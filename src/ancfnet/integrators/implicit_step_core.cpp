@@ -52,8 +52,7 @@ const SparseMatrixd& ImplicitStepCore::CalcIterationMatrix(const VectorXd& q, co
   damping_.AddRayleighJacobian(weights.damping, &iteration_matrix_);
   if (!contact_.empty())
     contact_.AddJacobian(q, v, previous_.contact_history, weights, &iteration_matrix_);
-  damping_.AddForces(v, ws_);  // the forces AssembleIterationMatrix leaves, completed
-  if (!contact_.empty()) contact_.AddForces(q, v, previous_.contact_history, ws_);
+  // The forces it leaves in ws_ are not used: Newton takes them from CalcResidual.
   return iteration_matrix_.matrix();
 }
 
