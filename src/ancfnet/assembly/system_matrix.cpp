@@ -31,30 +31,36 @@ SystemMatrix::SystemMatrix(const Model& model, const DofMap& dofs)
     : dofs_(&dofs),
       num_elements_(static_cast<Index>(model.elements().size())),
       num_point_masses_(static_cast<Index>(model.point_masses().size())) {
-  std::vector<std::vector<Index>> blocks;
   for (const CableElement& element : model.elements())
-    blocks.push_back({element.dofs[0], element.dofs[3], element.dofs[6], element.dofs[9]});
-  for (const PointMass& point : model.point_masses()) blocks.push_back({point.dof});
+    group_blocks_.push_back({element.dofs[0], element.dofs[3], element.dofs[6], element.dofs[9]});
+  for (const PointMass& point : model.point_masses()) group_blocks_.push_back({point.dof});
   for (const SpringDamperLink& link : model.links()) {
     std::vector<Index> group;
     for (const PointLocation* point : {&link.first, &link.second})
       for (int b = 0; b < point->num_blocks; ++b) group.push_back(point->dof[b]);
-    blocks.push_back(group);
+    group_blocks_.push_back(group);
   }
+  num_model_groups_ = group_blocks_.size();
+  Rebuild();
+}
 
+void SystemMatrix::Rebuild() {
+  const DofMap& dofs = *dofs_;
   std::vector<Eigen::Triplet<double, int>> triplets;
-  for (const auto& group : blocks) {
+  for (const auto& group : group_blocks_) {
     const std::vector<Index> coordinates = GroupCoordinates(group);
     for (Index c : coordinates)
       for (Index r : coordinates)
         if (dofs.unknown(r) >= 0 && dofs.unknown(c) >= 0)
           triplets.emplace_back(dofs.unknown(r), dofs.unknown(c), 0.0);
   }
-  matrix_.resize(dofs.num_unknowns(), dofs.num_unknowns());
+  matrix_ = SparseMatrixd(dofs.num_unknowns(), dofs.num_unknowns());
   matrix_.setFromTriplets(triplets.begin(), triplets.end());
   matrix_.makeCompressed();
 
-  for (const auto& group : blocks) {
+  groups_.clear();
+  slot_.clear();
+  for (const auto& group : group_blocks_) {
     const std::vector<Index> coordinates = GroupCoordinates(group);
     groups_.push_back({static_cast<int>(group.size()), slot_.size()});
     for (Index c : coordinates)
@@ -64,6 +70,33 @@ SystemMatrix::SystemMatrix(const Model& model, const DofMap& dofs)
         slot_.push_back(row >= 0 && col >= 0 ? FindSlot(matrix_, row, col) : -1);
       }
   }
+}
+
+bool SystemMatrix::AddContactCouplings(const std::vector<std::pair<Index, Index>>& owners) {
+  bool changed = false;
+  for (auto [a, b] : owners) {
+    if (a > b) std::swap(a, b);
+    const std::uint64_t key = (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint64_t>(b);
+    const int index = static_cast<int>(group_blocks_.size() - num_model_groups_);
+    if (!contact_coupling_.emplace(key, index).second) continue;
+    std::vector<Index> group = group_blocks_[a];
+    group.insert(group.end(), group_blocks_[b].begin(), group_blocks_[b].end());
+    group_blocks_.push_back(std::move(group));
+    changed = true;
+  }
+  if (changed) Rebuild();
+  return changed;
+}
+
+int SystemMatrix::FindContactCoupling(Index a, Index b) const {
+  const auto it =
+      contact_coupling_.find((static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint64_t>(b));
+  return it == contact_coupling_.end() ? -1 : it->second;
+}
+
+void SystemMatrix::AddContactBlock(int coupling, int i, int j, const Matrix3d& block,
+                                   double scale) {
+  AddGroupBlock(groups_[num_model_groups_ + coupling], i, j, block, scale);
 }
 
 void SystemMatrix::SetZero() {

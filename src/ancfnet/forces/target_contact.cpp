@@ -7,7 +7,6 @@
 #include "ancfnet/contact/distance/point_cylinder.hpp"
 #include "ancfnet/contact/distance/point_plane.hpp"
 #include "ancfnet/contact/distance/point_sphere.hpp"
-#include "ancfnet/contact/laws/tangential_friction.hpp"
 #include "ancfnet/elements/hermite_shape.hpp"
 
 namespace ancfnet {
@@ -55,7 +54,7 @@ int PointsPerElement(const ContactSpec& spec, double length, double radius) {
 std::vector<ContactProbe> MakeContactProbes(const Model& model) {
   const ContactSpec& spec = model.contact();
   std::vector<ContactProbe> probes;
-  if (!spec.enabled()) return probes;
+  if (spec.targets.empty()) return probes;
   const auto& elements = model.elements();
   for (std::size_t e = 0; e < elements.size(); ++e) {
     const CableElementParameters& p = elements[e].parameters;
@@ -106,47 +105,20 @@ void TargetContact::Locate(const ContactProbe& probe, const VectorXd& q, const V
   }
 }
 
-TargetContact::PairForce TargetContact::CalcPairForce(const ContactTarget& target,
-                                                      const ContactProbe& probe, const Vector3d& x,
-                                                      const Vector3d& x_dot, double approach_speed,
-                                                      bool with_jacobian) const {
-  PairForce r;
+ContactPairForce TargetContact::CalcPairForce(const ContactTarget& target,
+                                              const ContactProbe& probe, const Vector3d& x,
+                                              const Vector3d& x_dot, double approach_speed,
+                                              bool with_jacobian) const {
   const Gap gap = CalcGap(target, x);
-  const double penetration = probe.radius - gap.distance;
-  if (!(penetration > 0.0)) return r;
-  const Vector3d& n = gap.normal;
-  r.touching = true;
-  r.penetration = penetration;
-  r.rate = -n.dot(x_dot);  // δ̇ > 0 approaching
-  const ContactSpec& spec = model_.contact();
   // history > 0: the impact speed frozen at first touch; ≤ 0: apart at the last accepted
   // state, closing at −history (a constant through this step's Newton iterations).
-  const double v0 = std::abs(approach_speed);
-  const NormalForce normal = spec.normal.Evaluate(penetration, r.rate, v0);
-  r.normal_force = normal.force;
-  r.energy = spec.normal.CalcElasticEnergy(penetration);
-  r.force = normal.force * n;
-  r.dissipative = (normal.force - normal.elastic_force) * n;
-  // ∂δ/∂x = −nᵀ, ∂δ̇/∂x = −ẋᵀ H, ∂δ̇/∂ẋ = −nᵀ, ∂n/∂x = H.
-  const Eigen::RowVector3d dF_dx = -normal.dforce_ddelta * n.transpose() -
-                                   normal.dforce_ddelta_dot * (gap.hessian * x_dot).transpose();
-  const Eigen::RowVector3d dF_dv = -normal.dforce_ddelta_dot * n.transpose();
-  if (with_jacobian) {
-    r.dforce_dx = n * dF_dx + normal.force * gap.hessian;
-    r.dforce_dv = n * dF_dv;
-  }
-  if (spec.friction && normal.force > 0.0) {
-    const Matrix3d tangent = Matrix3d::Identity() - n * n.transpose();
-    const TangentialFriction f =
-        CalcTangentialFriction(*spec.friction, tangent * x_dot, normal.force);
-    r.force += f.force;
-    r.dissipative += f.force;
-    if (with_jacobian) {
-      r.dforce_dv += f.dforce_dvelocity * tangent + f.dforce_dnormal * dF_dv;
-      r.dforce_dx += f.dforce_dnormal * dF_dx;
-    }
-  }
-  return r;
+  const ContactKinematics kinematics{.penetration = probe.radius - gap.distance,
+                                     .normal = gap.normal,
+                                     .normal_derivative = gap.hessian,
+                                     .velocity = x_dot};
+  const ContactSpec& spec = model_.contact();
+  return CalcContactPairForce(spec.normal, spec.friction, kinematics, approach_speed,
+                              with_jacobian);
 }
 
 template <class Visit>
@@ -158,8 +130,8 @@ void TargetContact::ForEachTouchingPair(const VectorXd& q, const VectorXd& v,
     Vector3d x, x_dot;
     Locate(probes_[p], q, v, &x, &x_dot);
     for (std::size_t t = 0; t < targets.size(); ++t) {
-      const PairForce f = CalcPairForce(targets[t], probes_[p], x, x_dot,
-                                        history[p * targets.size() + t], with_jacobian);
+      const ContactPairForce f = CalcPairForce(targets[t], probes_[p], x, x_dot,
+                                               history[p * targets.size() + t], with_jacobian);
       if (f.touching) visit(probes_[p], f);
     }
   }
@@ -168,39 +140,41 @@ void TargetContact::ForEachTouchingPair(const VectorXd& q, const VectorXd& v,
 void TargetContact::AddForces(const VectorXd& q, const VectorXd& v,
                               const std::vector<double>& history, Workspace& ws) const {
   ws.contact_energy = 0.0;
-  ForEachTouchingPair(q, v, history, false, [&](const ContactProbe& probe, const PairForce& f) {
-    ws.contact_energy += f.energy;
-    if (probe.element < 0) {
-      const Index dof = model_.point_masses()[probe.point_mass].dof;
-      ws.internal_force.segment<3>(dof) -= f.force;
-      ws.viscous_force.segment<3>(dof) -= f.dissipative;
-      return;
-    }
-    const CableElement& element = model_.elements()[probe.element];
-    for (int k = 0; k < 4; ++k) {
-      const Index dof = element.dofs[3 * k];
-      ws.internal_force.segment<3>(dof) -= probe.shape[k] * f.force;
-      ws.viscous_force.segment<3>(dof) -= probe.shape[k] * f.dissipative;
-    }
-  });
+  ForEachTouchingPair(q, v, history, false,
+                      [&](const ContactProbe& probe, const ContactPairForce& f) {
+                        ws.contact_energy += f.energy;
+                        if (probe.element < 0) {
+                          const Index dof = model_.point_masses()[probe.point_mass].dof;
+                          ws.internal_force.segment<3>(dof) -= f.force;
+                          ws.viscous_force.segment<3>(dof) -= f.dissipative;
+                          return;
+                        }
+                        const CableElement& element = model_.elements()[probe.element];
+                        for (int k = 0; k < 4; ++k) {
+                          const Index dof = element.dofs[3 * k];
+                          ws.internal_force.segment<3>(dof) -= probe.shape[k] * f.force;
+                          ws.viscous_force.segment<3>(dof) -= probe.shape[k] * f.dissipative;
+                        }
+                      });
 }
 
 void TargetContact::AddJacobian(const VectorXd& q, const VectorXd& v,
                                 const std::vector<double>& history, const IterationWeights& weights,
                                 SystemMatrix* matrix) const {
-  ForEachTouchingPair(q, v, history, true, [&](const ContactProbe& probe, const PairForce& f) {
-    // Q = −Sᵀ f: ∂Q/∂e = −Sᵀ (∂f/∂x) S.
-    const Matrix3d block = -(weights.stiffness * f.dforce_dx + weights.damping * f.dforce_dv);
-    if (probe.element < 0) {
-      matrix->AddPointMassBlock(probe.point_mass, block);
-      return;
-    }
-    Matrix12d element_block;
-    for (int i = 0; i < 4; ++i)
-      for (int j = 0; j < 4; ++j)
-        element_block.block<3, 3>(3 * i, 3 * j) = probe.shape[i] * probe.shape[j] * block;
-    matrix->AddElementBlock(probe.element, element_block);
-  });
+  ForEachTouchingPair(
+      q, v, history, true, [&](const ContactProbe& probe, const ContactPairForce& f) {
+        // Q = −Sᵀ f: ∂Q/∂e = −Sᵀ (∂f/∂x) S.
+        const Matrix3d block = -(weights.stiffness * f.dforce_dx + weights.damping * f.dforce_dv);
+        if (probe.element < 0) {
+          matrix->AddPointMassBlock(probe.point_mass, block);
+          return;
+        }
+        Matrix12d element_block;
+        for (int i = 0; i < 4; ++i)
+          for (int j = 0; j < 4; ++j)
+            element_block.block<3, 3>(3 * i, 3 * j) = probe.shape[i] * probe.shape[j] * block;
+        matrix->AddElementBlock(probe.element, element_block);
+      });
 }
 
 void TargetContact::UpdateHistory(const VectorXd& q, const VectorXd& v,
@@ -226,7 +200,7 @@ void TargetContact::UpdateHistory(const VectorXd& q, const VectorXd& v,
 TargetContact::Summary TargetContact::Summarize(const VectorXd& q, const VectorXd& v,
                                                 const std::vector<double>& history) const {
   Summary s;
-  ForEachTouchingPair(q, v, history, false, [&](const ContactProbe&, const PairForce& f) {
+  ForEachTouchingPair(q, v, history, false, [&](const ContactProbe&, const ContactPairForce& f) {
     ++s.active;
     s.normal_force += f.normal_force;
     s.max_penetration = std::max(s.max_penetration, f.penetration);

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "ancfnet/assembly/forces.hpp"
+#include "ancfnet/contact/contact_pair_force.hpp"
 #include "ancfnet/model/model.hpp"
 #include "ancfnet/state/workspace.hpp"
 
@@ -58,16 +59,9 @@ class TargetContact {
   Summary Summarize(const VectorXd& q, const VectorXd& v, const std::vector<double>& history) const;
 
  private:
-  // One pair's force and its derivatives with respect to the probe's position and velocity.
-  struct PairForce {
-    bool touching = false;
-    double penetration = 0.0, rate = 0.0, normal_force = 0.0, energy = 0.0;
-    Vector3d force = Vector3d::Zero();        // f on the probe (N)
-    Vector3d dissipative = Vector3d::Zero();  // its damping and friction part
-    Matrix3d dforce_dx = Matrix3d::Zero(), dforce_dv = Matrix3d::Zero();
-  };
-  PairForce CalcPairForce(const ContactTarget& target, const ContactProbe& probe, const Vector3d& x,
-                          const Vector3d& x_dot, double approach_speed, bool with_jacobian) const;
+  ContactPairForce CalcPairForce(const ContactTarget& target, const ContactProbe& probe,
+                                 const Vector3d& x, const Vector3d& x_dot, double approach_speed,
+                                 bool with_jacobian) const;
   void Locate(const ContactProbe& probe, const VectorXd& q, const VectorXd& v, Vector3d* x,
               Vector3d* x_dot) const;
   // Calls visit(probe, force) for every touching (probe, target) pair at (q, v).

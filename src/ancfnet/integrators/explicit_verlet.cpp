@@ -12,6 +12,7 @@ ExplicitVerletIntegrator::ExplicitVerletIntegrator(const Model& model)
     : model_(model),
       damping_(model),
       contact_(model),
+      self_contact_(model),
       ws_(model),
       dofs_(DofMap::FreeCoordinates(model)) {}
 
@@ -21,6 +22,7 @@ bool ExplicitVerletIntegrator::Initialize(State* state) {
   SystemMatrix mass(model_, dofs_);
   AssembleMassMatrix(model_, ws_, &mass);
   if (!mass_solver_.Factorize(mass.matrix())) return false;
+  if (!self_contact_.empty()) self_contact_.FindCandidates(*state, 0.0);
   CalcAcceleration(state->q, state->v, &state->a);
   return true;
 }
@@ -28,7 +30,9 @@ bool ExplicitVerletIntegrator::Initialize(State* state) {
 void ExplicitVerletIntegrator::CalcAcceleration(const VectorXd& q, const VectorXd& v, VectorXd* a) {
   CalcInternalForces(model_, q, v, ws_);
   damping_.AddForces(v, ws_);
+  ws_.contact_energy = 0.0;
   if (!contact_.empty()) contact_.AddForces(q, v, contact_history_, ws_);
+  if (!self_contact_.empty()) self_contact_.AddForces(q, v, ws_);
   CalcExternalForces(model_, q, 1.0, ws_);
   net_force_ = ws_.external_force - ws_.internal_force;
   dofs_.Restrict(net_force_, &rhs_);
@@ -39,6 +43,7 @@ void ExplicitVerletIntegrator::CalcAcceleration(const VectorXd& q, const VectorX
 
 StepOutcome ExplicitVerletIntegrator::Step(double h, State* state) {
   previous_ = *state;
+  if (!self_contact_.empty()) self_contact_.FindCandidates(*state, h);
   state->v += 0.5 * h * state->a;
   state->q += h * state->v;
   ApplyPrescribedMotion(model_.prescribed(), state->t + h, &state->q, &state->v, nullptr);
@@ -55,6 +60,15 @@ StepOutcome ExplicitVerletIntegrator::Step(double h, State* state) {
                     h, EstimateCriticalStep(state->q));
     return outcome;
   }
+  if (!self_contact_.empty()) {
+    outcome.failure = self_contact_.CheckStep(state->q);
+    if (!outcome.failure.empty()) {
+      *state = previous_;
+      outcome.accepted = false;
+      return outcome;
+    }
+    self_contact_.UpdateHistory(state->q, state->v, &state->self_contact_history);
+  }
   if (!contact_.empty()) {
     contact_.UpdateHistory(state->q, state->v, &state->contact_history);
     contact_history_ = state->contact_history;
@@ -62,7 +76,9 @@ StepOutcome ExplicitVerletIntegrator::Step(double h, State* state) {
   // Viscous forces for the energy account at the full-step velocity.
   CalcInternalForces(model_, state->q, state->v, ws_);
   damping_.AddForces(state->v, ws_);
+  ws_.contact_energy = 0.0;
   if (!contact_.empty()) contact_.AddForces(state->q, state->v, contact_history_, ws_);
+  if (!self_contact_.empty()) self_contact_.AddForces(state->q, state->v, ws_);
   return outcome;
 }
 

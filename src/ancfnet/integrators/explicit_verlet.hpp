@@ -5,6 +5,7 @@
 #include "ancfnet/analysis/energy_tracker.hpp"
 #include "ancfnet/assembly/forces.hpp"
 #include "ancfnet/forces/damping_model.hpp"
+#include "ancfnet/forces/self_contact.hpp"
 #include "ancfnet/forces/target_contact.hpp"
 #include "ancfnet/integrators/step_outcome.hpp"
 #include "ancfnet/solvers/linear_solver.hpp"
@@ -37,6 +38,7 @@ class ExplicitVerletIntegrator {
   const Model& model_;
   DampingModel damping_;
   TargetContact contact_;
+  SelfContact self_contact_;
   std::vector<double> contact_history_;  // the state's, at the start of the step
   Workspace ws_;
   DofMap dofs_;

@@ -113,6 +113,10 @@ StepOutcome GeneralizedAlphaIntegrator::Step(double h, State* state) {
     result.iterations += first.iterations;
     result.jacobian_updates += first.jacobian_updates;
   }
+  if (result.converged) {
+    result.failure = core_.CheckStep(state->q);
+    result.converged = result.failure.empty();
+  }
   StepOutcome outcome{.accepted = result.converged,
                       .newton_iterations = result.iterations,
                       .jacobian_updates = result.jacobian_updates,

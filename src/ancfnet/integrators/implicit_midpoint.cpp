@@ -74,22 +74,27 @@ StepOutcome ImplicitMidpointIntegrator::Step(double h, State* state) {
   StepProblem problem(*this, h, *state);
   problem.Reset();
   const NewtonResult result = core_.Solve(problem);
-  const StepOutcome outcome{.accepted = result.converged,
-                            .newton_iterations = result.iterations,
-                            .jacobian_updates = result.jacobian_updates,
-                            .failure = result.failure};
+  StepOutcome outcome{.accepted = result.converged,
+                      .newton_iterations = result.iterations,
+                      .jacobian_updates = result.jacobian_updates,
+                      .failure = result.failure};
   const State& previous = core_.previous();
-  if (!result.converged) {
+  if (result.converged) {
+    // The end of the step mirrors the start about the midpoint.
+    state->t = previous.t + h;
+    for (Index i : core_.dofs().coordinates()) {
+      state->q[i] = 2.0 * midpoint_.q[i] - previous.q[i];
+      state->v[i] = 2.0 * midpoint_.v[i] - previous.v[i];
+    }
+    outcome.failure = core_.CheckStep(state->q);
+    outcome.accepted = outcome.failure.empty();
+  }
+  if (!outcome.accepted) {
+    state->t = previous.t;
     state->q = previous.q;
     state->v = previous.v;
     state->a = previous.a;
     return outcome;
-  }
-  // The end of the step mirrors the start about the midpoint.
-  state->t = previous.t + h;
-  for (Index i : core_.dofs().coordinates()) {
-    state->q[i] = 2.0 * midpoint_.q[i] - previous.q[i];
-    state->v[i] = 2.0 * midpoint_.v[i] - previous.v[i];
   }
   core_.AcceptStep(state);
   // Forces at the converged midpoint, for the energy account.

@@ -8,6 +8,7 @@ ImplicitStepCore::ImplicitStepCore(const Model& model, const DynamicSettings& se
     : model_(model),
       damping_(model),
       contact_(model),
+      self_contact_(model),
       ws_(model),
       dofs_(DofMap::FreeCoordinates(model)),
       iteration_matrix_(model, dofs_),
@@ -36,6 +37,15 @@ void ImplicitStepCore::BeginStep(double h, const State& state) {
   previous_.contact_history = state.contact_history;
   if (h != last_h_) newton_.InvalidateJacobian();
   last_h_ = h;
+  if (!self_contact_.empty()) {
+    self_contact_.FindCandidates(state, h);
+    if (iteration_matrix_.AddContactCouplings(self_contact_.candidate_owners()))
+      newton_.InvalidatePattern();
+  }
+}
+
+std::string ImplicitStepCore::CheckStep(const VectorXd& q) const {
+  return self_contact_.empty() ? std::string() : self_contact_.CheckStep(q);
 }
 
 void ImplicitStepCore::CalcResidual(const VectorXd& q, const VectorXd& v, const VectorXd& a,
@@ -52,6 +62,7 @@ const SparseMatrixd& ImplicitStepCore::CalcIterationMatrix(const VectorXd& q, co
   damping_.AddRayleighJacobian(weights.damping, &iteration_matrix_);
   if (!contact_.empty())
     contact_.AddJacobian(q, v, previous_.contact_history, weights, &iteration_matrix_);
+  if (!self_contact_.empty()) self_contact_.AddJacobian(q, v, weights, &iteration_matrix_);
   // The forces it leaves in ws_ are not used: Newton takes them from CalcResidual.
   return iteration_matrix_.matrix();
 }
@@ -59,12 +70,16 @@ const SparseMatrixd& ImplicitStepCore::CalcIterationMatrix(const VectorXd& q, co
 void ImplicitStepCore::CalcForces(const VectorXd& q, const VectorXd& v) {
   CalcInternalForces(model_, q, v, ws_);
   damping_.AddForces(v, ws_);
+  ws_.contact_energy = 0.0;
   if (!contact_.empty()) contact_.AddForces(q, v, previous_.contact_history, ws_);
+  if (!self_contact_.empty()) self_contact_.AddForces(q, v, ws_);
   CalcExternalForces(model_, q, 1.0, ws_);
 }
 
 void ImplicitStepCore::AcceptStep(State* state) const {
   if (!contact_.empty()) contact_.UpdateHistory(state->q, state->v, &state->contact_history);
+  if (!self_contact_.empty())
+    self_contact_.UpdateHistory(state->q, state->v, &state->self_contact_history);
 }
 
 double ImplicitStepCore::IncrementNorm(const VectorXd& da, const VectorXd& q, double scale) const {

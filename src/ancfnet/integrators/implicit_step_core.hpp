@@ -5,6 +5,7 @@
 
 #include "ancfnet/assembly/forces.hpp"
 #include "ancfnet/forces/damping_model.hpp"
+#include "ancfnet/forces/self_contact.hpp"
 #include "ancfnet/forces/target_contact.hpp"
 #include "ancfnet/solvers/analysis_settings.hpp"
 #include "ancfnet/solvers/newton.hpp"
@@ -21,8 +22,12 @@ class ImplicitStepCore {
   /// sets the consistent acceleration a = M⁻¹ (Q_ext − Q_int). False when M is singular.
   bool Initialize(State* state);
   /// Saves the state at t_n (its contact history included); drops the factorisation when h
-  /// changed (the iteration matrix depends on h).
+  /// changed (the iteration matrix depends on h). Finds the self-contact pairs to watch during
+  /// the step and adds their couplings to the iteration matrix (a new pattern is analysed anew).
   void BeginStep(double h, const State& state);
+  /// Empty when a converged step to q may be accepted, else why not (self-contact search
+  /// margin exceeded, threads passed through each other).
+  std::string CheckStep(const VectorXd& q) const;
   /// After a converged step: the contact history at the new state.
   void AcceptStep(State* state) const;
   /// Newton iterations on `problem` with the shared solver.
@@ -51,6 +56,7 @@ class ImplicitStepCore {
   const Model& model_;
   DampingModel damping_;
   TargetContact contact_;
+  SelfContact self_contact_;
   Workspace ws_;
   DofMap dofs_;
   SystemMatrix iteration_matrix_;

@@ -100,16 +100,24 @@ ContactTarget ReadTarget(const YamlValue& value) {
 
 void ReadContact(const YamlValue& value, ModelBuilder* builder) {
   const YamlMap map = value.AsMap();
-  map.CheckKeys(
-      {"law", "friction", "cable_radius", "point_mass_radius", "points_per_element", "targets"});
+  map.CheckKeys({"law", "friction", "cable_radius", "point_mass_radius", "points_per_element",
+                 "targets", "self_contact", "self_contact_geometry", "capsules_per_element"});
   ContactSpec spec;
   spec.normal = ReadNormalLaw(map.Get("law"));
   if (auto v = map.Find("friction")) spec.friction = ReadFriction(*v);
   if (auto v = map.Find("cable_radius")) spec.cable_radius = v->AsPositive();
   if (auto v = map.Find("point_mass_radius")) spec.point_mass_radius = v->AsNonNegative();
   if (auto v = map.Find("points_per_element")) spec.points_per_element = v->AsInt(1, 1000);
-  for (const YamlValue& target : map.Get("targets").AsList(true))
-    spec.targets.push_back(ReadTarget(target));
+  if (auto v = map.Find("self_contact")) spec.self_contact = v->AsBool();
+  if (auto v = map.Find("self_contact_geometry"))
+    spec.self_geometry = v->AsChoice({"capsules", "spheres"}) == 0
+                             ? ContactSpec::SelfGeometry::kCapsules
+                             : ContactSpec::SelfGeometry::kSpheres;
+  if (auto v = map.Find("capsules_per_element")) spec.capsules_per_element = v->AsInt(1, 1000);
+  // Targets may be left out when only the threads touch each other.
+  if (!spec.self_contact || map.Find("targets"))
+    for (const YamlValue& target : map.Get("targets").AsList(true))
+      spec.targets.push_back(ReadTarget(target));
   value.Locate([&] { builder->SetContact(spec); });
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 /// @file Contact of the model's cables and point masses with rigid, fixed targets (a plane, a
-/// sphere, a box, a cylinder): the description. The forces are made by
-/// forces/target_contact.hpp. Cables are probed by inspection spheres of the thread's radius at
-/// points along each element's centre line; point masses are spheres.
+/// sphere, a box, a cylinder) and with each other: the description. The forces are made by
+/// forces/target_contact.hpp and forces/self_contact.hpp. Cables are probed by inspection spheres
+/// of the thread's radius at points along each element's centre line; point masses are spheres.
 
 #include <optional>
 #include <string>
@@ -37,7 +37,18 @@ struct ContactSpec {
   /// Radius of the inspection spheres (m); 0: each cable's own section radius.
   double cable_radius = 0.0;
   double point_mass_radius = 0.0;  ///< m, ≥ 0
-  bool enabled() const { return !targets.empty(); }
+
+  /// Contact of the threads with each other and with the point masses (knots), and of the
+  /// point masses with each other (forces/self_contact.hpp).
+  bool self_contact = false;
+  /// Geometry of the threads in self-contact: a chain of capsules of the thread's radius along
+  /// each element's deformed centre line, or its inspection spheres.
+  enum class SelfGeometry { kCapsules, kSpheres };
+  SelfGeometry self_geometry = SelfGeometry::kCapsules;
+  /// Capsules per cable element; 0: automatic, one per 8 radii of element length, 1 … 8.
+  int capsules_per_element = 0;
+
+  bool enabled() const { return !targets.empty() || self_contact; }
 };
 
 }  // namespace ancfnet

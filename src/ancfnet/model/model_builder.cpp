@@ -97,6 +97,8 @@ void ModelBuilder::SetContact(const ContactSpec& contact) {
     throw InputError("contact friction: the bristle (LuGre) law is not available for contact yet");
   if (contact.points_per_element < 0 || contact.points_per_element > 1000)
     throw InputError("contact: points_per_element must be 0 (automatic) … 1000");
+  if (contact.capsules_per_element < 0 || contact.capsules_per_element > 1000)
+    throw InputError("contact: capsules_per_element must be 0 (automatic) … 1000");
   RequireNonNegative(contact.cable_radius, "contact cable radius");
   RequireNonNegative(contact.point_mass_radius, "contact point mass radius");
   for (const ContactTarget& t : contact.targets) {

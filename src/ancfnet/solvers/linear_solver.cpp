@@ -19,10 +19,7 @@ constexpr double kMinRcondForRefactor = 1e-12;
 class KluFactorization {
  public:
   KluFactorization() { klu_defaults(&common_); }
-  ~KluFactorization() {
-    if (numeric_) klu_free_numeric(&numeric_, &common_);
-    if (symbolic_) klu_free_symbolic(&symbolic_, &common_);
-  }
+  ~KluFactorization() { ForgetPattern(); }
   KluFactorization(const KluFactorization&) = delete;
   KluFactorization& operator=(const KluFactorization&) = delete;
 
@@ -41,6 +38,11 @@ class KluFactorization {
     if (numeric_) klu_free_numeric(&numeric_, &common_);
     numeric_ = klu_factor(ap, ai, ax, symbolic_, &common_);
     return numeric_ != nullptr && common_.status == KLU_OK;
+  }
+
+  void ForgetPattern() {
+    if (numeric_) klu_free_numeric(&numeric_, &common_);
+    if (symbolic_) klu_free_symbolic(&symbolic_, &common_);
   }
 
   void Solve(const VectorXd& b, VectorXd* x) {
@@ -65,6 +67,7 @@ class EigenSparseLu {
     solver_.factorize(a);
     return solver_.info() == Eigen::Success;
   }
+  void ForgetPattern() { analysed_ = false; }
   void Solve(const VectorXd& b, VectorXd* x) { *x = solver_.solve(b); }
 
  private:
@@ -88,6 +91,10 @@ SparseLinearSolver& SparseLinearSolver::operator=(SparseLinearSolver&&) noexcept
 
 bool SparseLinearSolver::Factorize(const SparseMatrixd& a) {
   return std::visit([&](auto& solver) { return solver.Factorize(a); }, impl_->solver);
+}
+
+void SparseLinearSolver::ForgetPattern() {
+  std::visit([](auto& solver) { solver.ForgetPattern(); }, impl_->solver);
 }
 
 void SparseLinearSolver::Solve(const VectorXd& b, VectorXd* x) {

@@ -21,8 +21,10 @@ class SparseLinearSolver {
   SparseLinearSolver& operator=(SparseLinearSolver&&) noexcept;
 
   /// Factorises `a` (analysing its pattern on the first call; the pattern must not change
-  /// afterwards). Returns false when the matrix is singular.
+  /// afterwards unless ForgetPattern is called). Returns false when the matrix is singular.
   bool Factorize(const SparseMatrixd& a);
+  /// Drops the analysis and the factorisation: the next Factorize analyses a new pattern.
+  void ForgetPattern();
   /// x = A⁻¹ b with the last factorisation.
   void Solve(const VectorXd& b, VectorXd* x);
 

@@ -39,6 +39,11 @@ class NewtonSolver {
 
   /// Marks the stored factorisation as stale (e.g. after a change of time step).
   void InvalidateJacobian() { jacobian_fresh_ = false; has_factorization_ = false; }
+  /// The iteration matrix has a new pattern (contact couplings were added).
+  void InvalidatePattern() {
+    InvalidateJacobian();
+    linear_solver_.ForgetPattern();
+  }
 
  private:
   template <class Problem>

@@ -10,6 +10,15 @@ namespace ancfnet {
 
 class Model;
 
+/// What a pair of self-contact primitives (forces/self_contact.hpp) remembers between steps:
+/// like State::contact_history, its impact speed (> 0) while it touches, or minus its closing
+/// speed while apart (≤ 0). Kept for the pairs found near each other at the last accepted step.
+struct SelfContactPairHistory {
+  int first = 0;   ///< primitive, first < second
+  int second = 0;  ///< primitive
+  double value = 0.0;
+};
+
 /// Time t (s) and the generalised coordinates q, velocities v = q̇ and accelerations a = q̈ of
 /// every coordinate of the model, fixed ones included.
 struct State {
@@ -23,6 +32,8 @@ struct State {
   /// Per (contact probe, target) pair: its impact speed (m/s, > 0) while it touches, minus its
   /// closing speed while apart (forces/target_contact.hpp).
   std::vector<double> contact_history;
+  /// Sorted by (first, second).
+  std::vector<SelfContactPairHistory> self_contact_history;
 };
 
 /// The model's initial state at t = 0 (accelerations zero until an integrator computes them).

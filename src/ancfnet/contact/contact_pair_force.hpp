@@ -1,0 +1,48 @@
+#pragma once
+/// @file The force of one contact pair from its penetration, normal and relative velocity: the
+/// normal law plus regularised friction, with the derivatives an implicit integrator needs. Shared
+/// by the contact with rigid targets and the self-contact of threads (docs/theory.md, "Contact
+/// with rigid targets" and "Self-contact").
+
+#include <optional>
+
+#include "ancfnet/common/types.hpp"
+#include "ancfnet/contact/laws/friction_law.hpp"
+#include "ancfnet/contact/laws/normal_law.hpp"
+
+namespace ancfnet {
+
+/// Where a pair stands: the penetration δ = r − g of a probe of radius r at gap g, the unit
+/// normal n pushing the probe out (from the other body towards it), ∂n/∂x, and the velocity ẋ of
+/// the probe relative to the other body. x is the probe's position relative to the other body.
+struct ContactKinematics {
+  double penetration = 0.0;                       ///< δ (m), > 0 when touching
+  Vector3d normal = Vector3d::UnitZ();            ///< n
+  Matrix3d normal_derivative = Matrix3d::Zero();  ///< ∂n/∂x (1/m)
+  Vector3d velocity = Vector3d::Zero();           ///< ẋ (m/s)
+};
+
+/// The force f on the probe and its derivatives with respect to x and ẋ.
+struct ContactPairForce {
+  bool touching = false;
+  double penetration = 0.0;                 ///< δ (m)
+  double rate = 0.0;                        ///< δ̇ = −n·ẋ (m/s), > 0 approaching
+  double normal_force = 0.0;                ///< F_n (N)
+  double energy = 0.0;                      ///< ∫ F_elastic dδ (J)
+  Vector3d force = Vector3d::Zero();        ///< f = F_n n + f_t (N)
+  Vector3d dissipative = Vector3d::Zero();  ///< its damping and friction part (N)
+  Vector3d friction = Vector3d::Zero();     ///< f_t (N)
+  Matrix3d dforce_dx = Matrix3d::Zero();    ///< ∂f/∂x
+  Matrix3d dforce_dv = Matrix3d::Zero();    ///< ∂f/∂ẋ
+};
+
+/// F_n = law(δ, δ̇, v₀) along n plus regularised friction on the tangential velocity
+/// (I − n nᵀ) ẋ. Derivatives use ∂δ/∂x = −nᵀ, ∂δ̇/∂x = −ẋᵀ ∂n/∂x, ∂δ̇/∂ẋ = −nᵀ; left out: the
+/// friction force's dependence on x through the tangent plane. `approach_speed` is v₀ (its
+/// absolute value is used). Not touching (δ ≤ 0): all zero.
+ContactPairForce CalcContactPairForce(const NormalLaw& normal_law,
+                                      const std::optional<FrictionLaw>& friction_law,
+                                      const ContactKinematics& kinematics, double approach_speed,
+                                      bool with_jacobian);
+
+}  // namespace ancfnet

@@ -1,0 +1,246 @@
+#include "ancfnet/forces/self_contact.hpp"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "ancfnet/assembly/system_matrix.hpp"
+#include "ancfnet/contact/distance/segment_segment.hpp"
+
+namespace ancfnet {
+
+SelfContact::SelfContact(const Model& model)
+    : model_(model), primitives_(MakeSelfContactPrimitives(model)), filter_(model, primitives_) {}
+
+SelfContact::Axis SelfContact::Locate(const SelfContactPrimitive& p, const VectorXd& q,
+                                      const VectorXd& v) const {
+  Axis axis;
+  if (p.element < 0) {
+    const Index dof = model_.point_masses()[p.point_mass].dof;
+    axis.x0 = axis.x1 = q.segment<3>(dof);
+    axis.v0 = axis.v1 = v.segment<3>(dof);
+    return axis;
+  }
+  const CableElement& element = model_.elements()[p.element];
+  axis.x0.setZero();
+  axis.x1.setZero();
+  axis.v0.setZero();
+  axis.v1.setZero();
+  for (int k = 0; k < 4; ++k) {
+    const Index dof = element.dofs[3 * k];
+    axis.x0 += p.shape0[k] * q.segment<3>(dof);
+    axis.x1 += p.shape1[k] * q.segment<3>(dof);
+    axis.v0 += p.shape0[k] * v.segment<3>(dof);
+    axis.v1 += p.shape1[k] * v.segment<3>(dof);
+  }
+  return axis;
+}
+
+int SelfContact::Blocks(const SelfContactPrimitive& p, double s, std::array<double, 4>* weight,
+                        std::array<Index, 4>* dof) const {
+  if (p.element < 0) {
+    (*weight)[0] = 1.0;
+    (*dof)[0] = model_.point_masses()[p.point_mass].dof;
+    return 1;
+  }
+  const CableElement& element = model_.elements()[p.element];
+  for (int k = 0; k < 4; ++k) {
+    (*weight)[k] = (1.0 - s) * p.shape0[k] + s * p.shape1[k];
+    (*dof)[k] = element.dofs[3 * k];
+  }
+  return 4;
+}
+
+SelfContact::PairState SelfContact::CalcPair(const Candidate& c, const VectorXd& q,
+                                             const VectorXd& v, PairDetail detail) const {
+  const SelfContactPrimitive& pa = primitives_[c.a];
+  const SelfContactPrimitive& pb = primitives_[c.b];
+  const Axis a = Locate(pa, q, v);
+  const Axis b = Locate(pb, q, v);
+  const CapsuleCapsuleDistance d =
+      CalcCapsuleCapsuleDistance(a.x0, a.x1, pa.radius, b.x0, b.x1, pb.radius);
+  PairState r;
+  // A chain's vertex belongs to the capsule starting there, and counts only where it is also the
+  // closest point seen from the capsule ending there.
+  r.counted = OwnsClosestPoint(pa, d.axes.part_p, d.axes.direction, q) &&
+              OwnsClosestPoint(pb, d.axes.part_q, -d.axes.direction, q);
+  r.s = d.axes.s;
+  r.t = d.axes.t;
+  r.gap = d.gap;
+  r.direction = d.axes.direction;
+  r.velocity = (1.0 - r.s) * a.v0 + r.s * a.v1 - (1.0 - r.t) * b.v0 - r.t * b.v1;
+  if (detail == PairDetail::kGeometry || !r.counted) return r;
+  // Relative position x = x_a − x_b of the closest points: n = u, ∂u/∂x = (I − u uᵀ)/|x|.
+  const Vector3d& u = d.axes.direction;
+  ContactKinematics k;
+  k.penetration = -d.gap;
+  k.normal = u;
+  if (d.axes.distance > 1e-12 * (pa.radius + pb.radius))
+    k.normal_derivative = (Matrix3d::Identity() - u * u.transpose()) / d.axes.distance;
+  k.velocity = r.velocity;
+  const ContactSpec& spec = model_.contact();
+  r.force = CalcContactPairForce(spec.normal, spec.friction, k, c.history,
+                                 detail == PairDetail::kJacobian);
+  return r;
+}
+
+bool SelfContact::OwnsClosestPoint(const SelfContactPrimitive& p, SegmentPart part,
+                                   const Vector3d& direction, const VectorXd& q) const {
+  if (part == SegmentPart::kEnd) return p.next < 0;
+  if (part == SegmentPart::kInterior || p.previous < 0) return true;
+  // At its start: moving back along the previous capsule must not come closer.
+  const Axis here = Locate(p, q, q);
+  const Axis before = Locate(primitives_[p.previous], q, q);
+  return (here.x0 - before.x0).dot(direction) <= 0.0;
+}
+
+void SelfContact::FindCandidates(const State& state, double h) {
+  const std::size_t n = primitives_.size();
+  boxes_.resize(n);
+  margin_.resize(n);
+  start_x0_.resize(n);
+  start_x1_.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Axis axis = Locate(primitives_[i], state.q, state.v);
+    margin_[i] = 2.0 * h * std::max(axis.v0.norm(), axis.v1.norm()) + 0.5 * primitives_[i].radius;
+    boxes_[i] = Aabb::OfCapsule(axis.x0, axis.x1, primitives_[i].radius, margin_[i]);
+    start_x0_[i] = axis.x0;
+    start_x1_[i] = axis.x1;
+  }
+  broad_phase_.FindOverlaps(boxes_, &overlaps_);
+  candidates_.clear();
+  owners_.clear();
+  const double min_speed = model_.contact().normal.min_approach_speed;
+  const auto& history = state.self_contact_history;
+  for (const auto& [a, b] : overlaps_) {
+    if (filter_.Excluded(a, b)) continue;
+    Candidate c{.a = a, .b = b};
+    const PairState pair = CalcPair(c, state.q, state.v, PairDetail::kGeometry);
+    if (pair.gap > margin_[a] + margin_[b]) continue;
+    c.direction_start = pair.direction;
+    const auto it = std::lower_bound(history.begin(), history.end(), c,
+                                     [](const SelfContactPairHistory& h, const Candidate& k) {
+                                       return h.first != k.a ? h.first < k.a : h.second < k.b;
+                                     });
+    if (it != history.end() && it->first == a && it->second == b) {
+      c.history = it->value;
+    } else {
+      // A pair new to the search: minus its closing speed now, or its impact speed when it
+      // already touches.
+      const double closing = std::max(-pair.direction.dot(pair.velocity), 0.0);
+      c.history = pair.gap < 0.0 ? std::max(closing, min_speed) : -closing;
+    }
+    candidates_.push_back(c);
+    owners_.emplace_back(primitives_[a].owner, primitives_[b].owner);
+  }
+}
+
+void SelfContact::AddForces(const VectorXd& q, const VectorXd& v, Workspace& ws) const {
+  std::array<double, 4> wa, wb;
+  std::array<Index, 4> da, db;
+  for (const Candidate& c : candidates_) {
+    const PairState pair = CalcPair(c, q, v, PairDetail::kForce);
+    if (!pair.force.touching) continue;
+    ws.contact_energy += pair.force.energy;
+    const int na = Blocks(primitives_[c.a], pair.s, &wa, &da);
+    const int nb = Blocks(primitives_[c.b], pair.t, &wb, &db);
+    for (int k = 0; k < na; ++k) {
+      ws.internal_force.segment<3>(da[k]) -= wa[k] * pair.force.force;
+      ws.viscous_force.segment<3>(da[k]) -= wa[k] * pair.force.dissipative;
+    }
+    for (int k = 0; k < nb; ++k) {
+      ws.internal_force.segment<3>(db[k]) += wb[k] * pair.force.force;
+      ws.viscous_force.segment<3>(db[k]) += wb[k] * pair.force.dissipative;
+    }
+  }
+}
+
+void SelfContact::AddJacobian(const VectorXd& q, const VectorXd& v, const IterationWeights& weights,
+                              SystemMatrix* matrix) const {
+  std::array<double, 4> wa, wb;
+  std::array<Index, 4> da, db;
+  for (const Candidate& c : candidates_) {
+    const PairState pair = CalcPair(c, q, v, PairDetail::kJacobian);
+    if (!pair.force.touching) continue;
+    const int na = Blocks(primitives_[c.a], pair.s, &wa, &da);
+    const int nb = Blocks(primitives_[c.b], pair.t, &wb, &db);
+    // Q_a = −W_aᵀ f, Q_b = W_bᵀ f with f(x_a − x_b): ∂Q_a/∂q_a = −W_aᵀ (∂f/∂x) W_a, etc.
+    const Matrix3d k =
+        -(weights.stiffness * pair.force.dforce_dx + weights.damping * pair.force.dforce_dv);
+    const Index owner_a = primitives_[c.a].owner, owner_b = primitives_[c.b].owner;
+    const bool a_first = owner_a <= owner_b;
+    const int coupling =
+        matrix->FindContactCoupling(std::min(owner_a, owner_b), std::max(owner_a, owner_b));
+    const int offset_a = a_first ? 0 : nb, offset_b = a_first ? na : 0;
+    for (int i = 0; i < na; ++i) {
+      for (int j = 0; j < na; ++j)
+        matrix->AddContactBlock(coupling, offset_a + i, offset_a + j, k, wa[i] * wa[j]);
+      for (int j = 0; j < nb; ++j)
+        matrix->AddContactBlock(coupling, offset_a + i, offset_b + j, k, -wa[i] * wb[j]);
+    }
+    for (int i = 0; i < nb; ++i) {
+      for (int j = 0; j < na; ++j)
+        matrix->AddContactBlock(coupling, offset_b + i, offset_a + j, k, -wb[i] * wa[j]);
+      for (int j = 0; j < nb; ++j)
+        matrix->AddContactBlock(coupling, offset_b + i, offset_b + j, k, wb[i] * wb[j]);
+    }
+  }
+}
+
+std::string SelfContact::CheckStep(const VectorXd& q) const {
+  for (std::size_t i = 0; i < primitives_.size(); ++i) {
+    const Axis axis = Locate(primitives_[i], q, q);
+    const double moved = std::max((axis.x0 - start_x0_[i]).norm(), (axis.x1 - start_x1_[i]).norm());
+    if (moved > margin_[i])
+      return fmt::format(
+          "self-contact: a primitive moved {:.3g} m in one step, more than its "
+          "search margin {:.3g} m",
+          moved, margin_[i]);
+  }
+  for (const Candidate& c : candidates_) {
+    const PairState pair = CalcPair(c, q, q, PairDetail::kGeometry);
+    if (pair.direction.dot(c.direction_start) < 0.0) {
+      const SelfContactPrimitive& a = primitives_[c.a];
+      const SelfContactPrimitive& b = primitives_[c.b];
+      return fmt::format("self-contact: {} and {} passed through each other",
+                         a.element >= 0 ? fmt::format("element {}", a.element)
+                                        : fmt::format("point mass {}", a.point_mass),
+                         b.element >= 0 ? fmt::format("element {}", b.element)
+                                        : fmt::format("point mass {}", b.point_mass));
+    }
+  }
+  return {};
+}
+
+void SelfContact::UpdateHistory(const VectorXd& q, const VectorXd& v,
+                                std::vector<SelfContactPairHistory>* history) const {
+  history->clear();
+  const double min_speed = model_.contact().normal.min_approach_speed;
+  for (const Candidate& c : candidates_) {
+    const PairState pair = CalcPair(c, q, v, PairDetail::kForce);
+    const double closing = std::max(-pair.direction.dot(pair.velocity), 0.0);
+    double value = c.history;
+    if (!pair.force.touching) {
+      value = -closing;  // apart: remember how fast it closes in
+    } else if (value <= 0.0) {
+      // Just touched: its impact speed is the closing speed before the touch.
+      value = std::max(std::max(-value, closing), min_speed);
+    }
+    history->push_back({c.a, c.b, value});
+  }
+}
+
+SelfContact::Summary SelfContact::Summarize(const VectorXd& q, const VectorXd& v) const {
+  Summary s;
+  for (const Candidate& c : candidates_) {
+    const PairState pair = CalcPair(c, q, v, PairDetail::kForce);
+    if (!pair.force.touching) continue;
+    ++s.active;
+    s.normal_force += pair.force.normal_force;
+    s.max_penetration = std::max(s.max_penetration, pair.force.penetration);
+  }
+  return s;
+}
+
+}  // namespace ancfnet

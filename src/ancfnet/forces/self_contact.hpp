@@ -1,0 +1,109 @@
+#pragma once
+/// @file Self-contact of a model's threads and knots: capsules along the elements' deformed
+/// centre lines (or inspection spheres) and point-mass spheres touching each other. Each step
+/// starts with a broad phase (uniform grid) and a narrow phase that keep the pairs within a
+/// speculative search margin; the Newton iterations then evaluate only those. The force of a
+/// pair acts at the closest points of the two axes, at material coordinates p, and is mapped to
+/// positions and slopes by Q = S(p)ᵀ f with S(p) the chord's interpolation of the shape functions
+/// (docs/theory.md, "Self-contact").
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "ancfnet/assembly/forces.hpp"
+#include "ancfnet/contact/broad_phase/uniform_grid.hpp"
+#include "ancfnet/contact/contact_pair_force.hpp"
+#include "ancfnet/contact/distance/segment_segment.hpp"
+#include "ancfnet/contact/self_contact_primitives.hpp"
+#include "ancfnet/model/model.hpp"
+#include "ancfnet/state/state.hpp"
+#include "ancfnet/state/workspace.hpp"
+
+namespace ancfnet {
+
+class SelfContact {
+ public:
+  explicit SelfContact(const Model& model);
+  bool empty() const { return primitives_.empty(); }
+  const std::vector<SelfContactPrimitive>& primitives() const { return primitives_; }
+
+  /// At the state that starts a step of size h: the pairs, not excluded, whose gap is below the
+  /// sum of their search margins m = 2 h max |ẋ| + r/2 (each end's speed, the primitive's
+  /// radius), with the history of each. Allocates only while its storage grows.
+  void FindCandidates(const State& state, double h);
+  /// Owners (SystemMatrix::AddContactCouplings) of the candidate pairs.
+  const std::vector<std::pair<Index, Index>>& candidate_owners() const { return owners_; }
+  /// Number of candidate pairs.
+  int num_candidates() const { return static_cast<int>(candidates_.size()); }
+
+  /// ws.internal_force −= Qᵀ f, ws.viscous_force alike, ws.contact_energy += Σ ∫ F_el dδ over
+  /// the touching candidate pairs at (q, v).
+  void AddForces(const VectorXd& q, const VectorXd& v, Workspace& ws) const;
+  /// matrix += c_K ∂Q/∂q + c_C ∂Q/∂q̇, the closest-point parameters held fixed, into the contact
+  /// couplings of the candidates (candidate_owners() must have been added to `matrix`).
+  void AddJacobian(const VectorXd& q, const VectorXd& v, const IterationWeights& weights,
+                   SystemMatrix* matrix) const;
+  /// Empty when the step to q may be accepted; else why not: a primitive moved farther than its
+  /// search margin (a pair not searched might touch), or a pair's closest-point direction
+  /// reversed (the two passed through each other).
+  std::string CheckStep(const VectorXd& q) const;
+  /// After an accepted step: the history of the candidate pairs at (q, v), as
+  /// TargetContact::UpdateHistory does it per pair.
+  void UpdateHistory(const VectorXd& q, const VectorXd& v,
+                     std::vector<SelfContactPairHistory>* history) const;
+
+  /// Touching pairs, total normal force (N) and largest penetration (m) at (q, v).
+  struct Summary {
+    int active = 0;
+    double normal_force = 0.0;
+    double max_penetration = 0.0;
+  };
+  Summary Summarize(const VectorXd& q, const VectorXd& v) const;
+
+ private:
+  struct Candidate {
+    int a = 0, b = 0;                              // primitives, a < b
+    double history = 0.0;                          // SelfContactPairHistory::value
+    Vector3d direction_start = Vector3d::UnitZ();  // closest-point direction at the step start
+  };
+  // Axis ends of a primitive and their velocities.
+  struct Axis {
+    Vector3d x0, x1, v0, v1;
+  };
+  // One pair: closest-point parameters on each axis, the gap, the direction u from b's closest
+  // point to a's, their relative velocity, and the force on a.
+  struct PairState {
+    double s = 0.0, t = 0.0, gap = 0.0;
+    bool counted = true;  // the pair's closest points are not counted by a neighbour
+    Vector3d direction = Vector3d::UnitZ();
+    Vector3d velocity = Vector3d::Zero();
+    ContactPairForce force;
+  };
+  enum class PairDetail { kGeometry, kForce, kJacobian };
+  // Whether a closest point at `part` of capsule p, seen in `direction` (from the other body
+  // towards p), is counted by p rather than by its neighbour along the chain.
+  bool OwnsClosestPoint(const SelfContactPrimitive& p, SegmentPart part, const Vector3d& direction,
+                        const VectorXd& q) const;
+  Axis Locate(const SelfContactPrimitive& p, const VectorXd& q, const VectorXd& v) const;
+  PairState CalcPair(const Candidate& c, const VectorXd& q, const VectorXd& v,
+                     PairDetail detail) const;
+  // Weights of a primitive's blocks at axis parameter s (4 for an element, 1 for a point mass)
+  // and the blocks' first coordinates.
+  int Blocks(const SelfContactPrimitive& p, double s, std::array<double, 4>* weight,
+             std::array<Index, 4>* dof) const;
+
+  const Model& model_;
+  std::vector<SelfContactPrimitive> primitives_;
+  SelfContactFilter filter_;
+  UniformGridBroadPhase broad_phase_;
+  // Storage of FindCandidates.
+  std::vector<Aabb> boxes_;
+  std::vector<double> margin_;
+  std::vector<Vector3d> start_x0_, start_x1_;
+  std::vector<std::pair<int, int>> overlaps_;
+  std::vector<Candidate> candidates_;
+  std::vector<std::pair<Index, Index>> owners_;
+};
+
+}  // namespace ancfnet

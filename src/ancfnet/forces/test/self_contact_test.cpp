@@ -1,0 +1,181 @@
+// Self-contact forces: two crossing cables pressed into each other (capsule chains, so slopes
+// take part) and a bead (point-mass sphere) on a thread. The forces are the exact gradient of the
+// contact energy (the closest points are stationary), and the Jacobians match central differences
+// up to the moving closest points' term that is left out (relative size δ / capsule length).
+
+#include "ancfnet/forces/self_contact.hpp"
+
+#include <gtest/gtest.h>
+
+#include "ancfnet/assembly/system_matrix.hpp"
+#include "ancfnet/model/model_builder.hpp"
+
+namespace ancfnet {
+namespace {
+
+constexpr double kRadius = 0.002;
+
+Model MakeCrossingCables(bool friction, bool damping) {
+  Material nylon{.youngs_modulus = 3e9, .density = 1140};
+  const CableProperties p = MakeCableProperties(nylon, MakeCircleSection(2 * kRadius));
+  ModelBuilder builder;
+  builder.AddCable({.name = "a",
+                    .start = Vector3d(-0.1, 0.013, 0.001),
+                    .end = Vector3d(0.1, -0.011, -0.0015),
+                    .num_elements = 2,
+                    .properties = p});
+  // Penetrating a by about 0.3 mm where they cross.
+  builder.AddCable({.name = "b",
+                    .start = Vector3d(0.017, -0.1, 2 * kRadius - 0.0003),
+                    .end = Vector3d(-0.009, 0.1, 2 * kRadius - 0.0004),
+                    .num_elements = 2,
+                    .properties = p});
+  // A bead pressed 0.2 mm into a from above.
+  builder.AddPointMass("bead", 0.01, Vector3d(0.05, -0.005, -0.000875 + 2 * kRadius - 0.0002));
+  ContactSpec spec;
+  spec.normal = damping ? MakeDissipativeContactLaw(NormalLawKind::kCarvalhoMartins, 1e5, 0.4)
+                        : MakeHertzContactLaw(1e7);
+  if (friction) spec.friction = MakeTanhFriction(0.4, 0.3, 1e-2, 1e-1);
+  spec.self_contact = true;
+  spec.capsules_per_element = 3;
+  spec.point_mass_radius = kRadius;
+  builder.SetContact(spec);
+  return builder.Build();
+}
+
+struct Fixture {
+  explicit Fixture(const Model& m) : model(m), contact(m), state(MakeInitialState(m)) {
+    for (Index i = 0; i < state.v.size(); ++i) state.v[i] = 0.01 * std::sin(1.7 * i + 0.3);
+    contact.FindCandidates(state, 1e-3);
+  }
+  VectorXd Forces(const VectorXd& q, const VectorXd& v, double* energy = nullptr) const {
+    Workspace ws(model);
+    ws.internal_force.setZero();
+    ws.viscous_force.setZero();
+    ws.contact_energy = 0.0;
+    contact.AddForces(q, v, ws);
+    if (energy) *energy = ws.contact_energy;
+    return ws.internal_force;
+  }
+  const Model& model;
+  SelfContact contact;
+  State state;
+};
+
+TEST(SelfContact, ForcesAreTheGradientOfTheContactEnergy) {
+  const Model model = MakeCrossingCables(false, false);
+  const Fixture f(model);
+  const SelfContact::Summary s = f.contact.Summarize(f.state.q, f.state.v);
+  ASSERT_EQ(s.active, 2);  // a–b and bead–a
+  const VectorXd q = f.state.q;
+  const VectorXd force = f.Forces(q, f.state.v);
+  const double h = 1e-9;
+  VectorXd gradient(q.size());
+  for (Index j = 0; j < q.size(); ++j) {
+    VectorXd qp = q, qm = q;
+    qp[j] += h;
+    qm[j] -= h;
+    double up = 0.0, um = 0.0;
+    f.Forces(qp, f.state.v, &up);
+    f.Forces(qm, f.state.v, &um);
+    gradient[j] = (up - um) / (2 * h);
+  }
+  // Q_int = ∂U/∂q.
+  EXPECT_LT((force - gradient).norm(), 1e-5 * force.norm());
+  // Action and reaction: no net force.
+  Vector3d total = Vector3d::Zero();
+  for (Index node = 0; node < model.num_nodes(); ++node)
+    total += force.segment<3>(model.NodePositionDof(node));
+  total += force.segment<3>(model.point_masses()[0].dof);
+  EXPECT_LT(total.norm(), 1e-10 * force.norm());
+}
+
+void ExpectJacobiansMatchFiniteDifferences(const Model& model, bool check_stiffness,
+                                           double tolerance) {
+  const Fixture f(model);
+  const DofMap all = DofMap::AllCoordinates(model);
+  for (const IterationWeights weights :
+       {IterationWeights{.mass = 0, .damping = 0, .stiffness = 1},
+        IterationWeights{.mass = 0, .damping = 1, .stiffness = 0}}) {
+    if (weights.stiffness != 0.0 && !check_stiffness) continue;
+    SystemMatrix matrix(model, all);
+    matrix.AddContactCouplings(f.contact.candidate_owners());
+    matrix.SetZero();
+    f.contact.AddJacobian(f.state.q, f.state.v, weights, &matrix);
+    const MatrixXd analytic = MatrixXd(matrix.matrix());
+    MatrixXd fd(analytic.rows(), analytic.cols());
+    const double h = 1e-8;
+    for (Index j = 0; j < model.num_dofs(); ++j) {
+      VectorXd qp = f.state.q, qm = f.state.q, vp = f.state.v, vm = f.state.v;
+      if (weights.stiffness != 0.0)
+        qp[j] += h, qm[j] -= h;
+      else
+        vp[j] += h, vm[j] -= h;
+      fd.col(j) = (f.Forces(qp, vp) - f.Forces(qm, vm)) / (2 * h);
+    }
+    const double error = (analytic - fd).norm() / fd.norm();
+    std::printf("self-contact %s Jacobian: relative error %.2e\n",
+                weights.stiffness != 0.0 ? "stiffness" : "damping", error);
+    EXPECT_LT(error, tolerance);
+  }
+}
+
+TEST(SelfContact, JacobiansMatchFiniteDifferences) {
+  // Left out of the stiffness: the closest points' motion, of relative size δ/ℓ ≈ 1e-2.
+  ExpectJacobiansMatchFiniteDifferences(MakeCrossingCables(false, true), true, 3e-2);
+  // The velocity Jacobian is exact, friction included.
+  ExpectJacobiansMatchFiniteDifferences(MakeCrossingCables(true, true), false, 1e-6);
+}
+
+TEST(SelfContactFilter, LeavesOutNeighboursOnAThreadAndAtAKnot) {
+  Material nylon{.youngs_modulus = 3e9, .density = 1140};
+  const CableProperties p = MakeCableProperties(nylon, MakeCircleSection(2 * kRadius));
+  ModelBuilder builder;
+  builder.AddPointMass("knot", 0.0, Vector3d::Zero());
+  builder.AddCable({.name = "a",
+                    .start = Vector3d::Zero(),
+                    .end = Vector3d(0.1, 0, 0),
+                    .num_elements = 4,
+                    .properties = p,
+                    .start_knot = "knot"});
+  builder.AddCable({.name = "b",
+                    .start = Vector3d::Zero(),
+                    .end = Vector3d(0, 0.1, 0),
+                    .num_elements = 4,
+                    .properties = p,
+                    .start_knot = "knot"});
+  builder.AddCable({.name = "c",
+                    .start = Vector3d(0.05, -0.05, 0),
+                    .end = Vector3d(0.05, 0.05, 0),
+                    .num_elements = 4,
+                    .properties = p});
+  ContactSpec spec;
+  spec.normal = MakeHertzContactLaw(1e7);
+  spec.self_contact = true;
+  spec.capsules_per_element = 8;  // 3.125 mm capsules; reach 2 (r + r) = 8 mm
+  spec.point_mass_radius = kRadius;
+  builder.SetContact(spec);
+  const Model model = builder.Build();
+  const auto primitives = MakeSelfContactPrimitives(model);
+  ASSERT_EQ(primitives.size(), 3u * 32u + 1u);
+  const SelfContactFilter filter(model, primitives);
+  // On a: capsule 0 and 1 and 3 (6.25 mm away along it) are neighbours; 0 and 4 (9.4 mm) not.
+  EXPECT_TRUE(filter.Excluded(0, 1));
+  EXPECT_TRUE(filter.Excluded(0, 3));
+  EXPECT_FALSE(filter.Excluded(0, 4));
+  // Across the knot: a's and b's first capsules are neighbours, a's 2nd and b's 2nd
+  // (3.125 + 3.125 mm) too, a's 3rd and b's 2nd (6.25 + 3.125 mm) not.
+  const int b = 32, c = 64, knot = 96;
+  EXPECT_TRUE(filter.Excluded(0, b));
+  EXPECT_TRUE(filter.Excluded(1, b + 1));
+  EXPECT_FALSE(filter.Excluded(2, b + 1));
+  // The knot sphere and the threads it holds; c is unrelated.
+  EXPECT_TRUE(filter.Excluded(0, knot));
+  EXPECT_TRUE(filter.Excluded(b, knot));
+  EXPECT_FALSE(filter.Excluded(4, knot));
+  EXPECT_FALSE(filter.Excluded(c, knot));
+  EXPECT_FALSE(filter.Excluded(0, c));
+}
+
+}  // namespace
+}  // namespace ancfnet
