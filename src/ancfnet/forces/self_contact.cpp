@@ -9,6 +9,12 @@
 #include "ancfnet/contact/distance/segment_segment.hpp"
 
 namespace ancfnet {
+namespace {
+
+// Deepest overlap of a pair accepted at the end of a step, as a fraction of its mean radius.
+constexpr double kMaxPenetrationRatio = 0.5;
+
+}  // namespace
 
 SelfContact::SelfContact(const Model& model)
     : model_(model), primitives_(MakeSelfContactPrimitives(model)), filter_(model, primitives_) {}
@@ -198,17 +204,21 @@ std::string SelfContact::CheckStep(const VectorXd& q) const {
           "search margin {:.3g} m",
           moved, margin_[i]);
   }
+  auto name = [&](const SelfContactPrimitive& p) {
+    return p.element >= 0 ? fmt::format("element {}", p.element)
+                          : fmt::format("point mass {}", p.point_mass);
+  };
   for (const Candidate& c : candidates_) {
     const PairState pair = CalcPair(c, q, q, PairDetail::kGeometry);
-    if (pair.direction.dot(c.direction_start) < 0.0) {
-      const SelfContactPrimitive& a = primitives_[c.a];
-      const SelfContactPrimitive& b = primitives_[c.b];
-      return fmt::format("self-contact: {} and {} passed through each other",
-                         a.element >= 0 ? fmt::format("element {}", a.element)
-                                        : fmt::format("point mass {}", a.point_mass),
-                         b.element >= 0 ? fmt::format("element {}", b.element)
-                                        : fmt::format("point mass {}", b.point_mass));
-    }
+    const SelfContactPrimitive& a = primitives_[c.a];
+    const SelfContactPrimitive& b = primitives_[c.b];
+    if (pair.direction.dot(c.direction_start) < 0.0)
+      return fmt::format("self-contact: {} and {} passed through each other", name(a), name(b));
+    const double allowed = kMaxPenetrationRatio * 0.5 * (a.radius + b.radius);
+    if (pair.counted && -pair.gap > allowed)
+      return fmt::format("self-contact: {} and {} overlap by {:.3g} m, more than {:.3g} m (a "
+                         "step too long for the impact, or a contact law too soft)",
+                         name(a), name(b), -pair.gap, allowed);
   }
   return {};
 }

@@ -45,8 +45,9 @@ class SelfContact {
   void AddJacobian(const VectorXd& q, const VectorXd& v, const IterationWeights& weights,
                    SystemMatrix* matrix) const;
   /// Empty when the step to q may be accepted; else why not: a primitive moved farther than its
-  /// search margin (a pair not searched might touch), or a pair's closest-point direction
-  /// reversed (the two passed through each other).
+  /// search margin (a pair not searched might touch), a pair's closest-point direction
+  /// reversed (the two passed through each other), or a pair overlaps by more than half its
+  /// mean radius (the step was too long to resolve the impact, or the law is too soft).
   std::string CheckStep(const VectorXd& q) const;
   /// After an accepted step: the history of the candidate pairs at (q, v), as
   /// TargetContact::UpdateHistory does it per pair.
