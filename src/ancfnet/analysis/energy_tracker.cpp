@@ -1,5 +1,6 @@
 #include "ancfnet/analysis/energy_tracker.hpp"
 
+#include "ancfnet/assembly/body_forces.hpp"
 #include "ancfnet/assembly/link_forces.hpp"
 #include "ancfnet/forces/orbital_frame.hpp"
 
@@ -13,14 +14,15 @@ double CalcKineticEnergy(const Model& model, const Workspace& ws, const VectorXd
   }
   for (const PointMass& point : model.point_masses())
     energy += 0.5 * point.mass * v.segment<3>(point.dof).squaredNorm();
-  return energy;
+  return energy + CalcBodyKineticEnergy(model, v);
 }
 
 double CalcStrainEnergy(const Model& model, const Workspace& ws, const VectorXd& q) {
   double energy = 0.0;
   for (const CableElement& element : model.elements())
     energy += CalcCableStrainEnergy(element.parameters, model.Gather(element, q));
-  return energy + CalcLinkEnergy(model, ws, q) + ws.contact_energy;
+  return energy + CalcLinkEnergy(model, ws, q) + CalcAttachmentEnergy(model, ws, q) +
+         ws.contact_energy;
 }
 
 EnergyTracker::EnergyTracker(const Model& model, const Workspace& ws, const State& state,

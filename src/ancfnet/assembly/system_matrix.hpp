@@ -13,7 +13,8 @@ class Model;
 
 /// The couplings are groups of 3-coordinate blocks whose coordinates interact: each cable element
 /// (its blocks r_A, r'_A, r_B, r'_B), each point mass (one block), and each spring-damper link
-/// (the blocks of its first point, then of its second).
+/// (the blocks of its first point, then of its second), each rigid body (x, ψ) and each body
+/// attachment (the blocks of its point, then the body's x and ψ).
 class SystemMatrix {
  public:
   /// Pattern of the model's couplings between unknowns of `dofs`; values zero.
@@ -29,6 +30,12 @@ class SystemMatrix {
   /// Adds scale · block to the 3×3 block (row block i, column block j) of link `link`, its
   /// blocks numbered first point's then second point's.
   void AddLinkBlock(Index link, int i, int j, const Matrix3d& block, double scale = 1.0);
+  /// Adds scale · block to the 3×3 block (i, j) of rigid body `body` (0: x, 1: ψ).
+  void AddBodyBlock(Index body, int i, int j, const Matrix3d& block, double scale = 1.0);
+  /// Adds scale · block to the 3×3 block (i, j) of body attachment `attachment`, its blocks
+  /// numbered the point's, then the body's x and ψ.
+  void AddAttachmentBlock(Index attachment, int i, int j, const Matrix3d& block,
+                          double scale = 1.0);
   /// Adds scale · block to the 3×3 block of rows starting at coordinate `row`, columns at `col`
   /// (both inside one coupling group). Searches the pattern: for rare terms only.
   void AddBlock3(Index row, Index col, const Matrix3d& block, double scale = 1.0);
@@ -42,9 +49,11 @@ class SystemMatrix {
 
   const DofMap* dofs_;
   SparseMatrixd matrix_;
-  std::vector<Group> groups_;  // elements, then point masses, then links
+  std::vector<Group> groups_;  // elements, point masses, links, bodies, then attachments
   Index num_elements_ = 0;
   Index num_point_masses_ = 0;
+  Index num_links_ = 0;
+  Index num_bodies_ = 0;
   // Index in matrix_.valuePtr() of each group entry, or −1 when its row or column is fixed.
   std::vector<int> slot_;
 };

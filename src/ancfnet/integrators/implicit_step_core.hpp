@@ -20,11 +20,13 @@ class ImplicitStepCore {
   /// Takes over the state's broken links, drops the stored Jacobian (also after a failure) and
   /// sets the consistent acceleration a = M⁻¹ (Q_ext − Q_int). False when M is singular.
   bool Initialize(State* state);
-  /// Saves the state at t_n (its contact history included); drops the factorisation when h
+  /// Saves the state at t_n (its contact history and body rotations included; ws() evaluates the
+  /// bodies with the latter until AcceptStep); drops the factorisation when h
   /// changed (the iteration matrix depends on h).
   void BeginStep(double h, const State& state);
-  /// After a converged step: the contact history at the new state.
-  void AcceptStep(State* state) const;
+  /// After a converged step: the contact history at the new state; the bodies' reference
+  /// orientations rebased (R_ref ← R_ref exp(ψ̃), ψ ← 0), in the state and in ws().
+  void AcceptStep(State* state);
   /// Newton iterations on `problem` with the shared solver.
   template <class Problem>
   NewtonResult Solve(Problem& problem) {
