@@ -36,21 +36,22 @@ Model OneBody(const Vector3d& inertia, const Vector3d& w_B, const Vector3d& grav
               const Vector3d& velocity = Vector3d::Zero(), BodyMotion motion = BodyMotion::kFree) {
   ModelBuilder builder;
   builder.SetGravity(gravity);
-  builder.AddRigidBody({.name = "body",
-                        .mass = 3.0,
-                        .inertia = inertia.asDiagonal(),
-                        .position = Vector3d(0.5, -1.0, 2.0),
-                        .orientation = Matrix3d(Eigen::AngleAxisd(0.4, Vector3d(1, 1, 0).normalized())),
-                        .velocity = velocity,
-                        .angular_velocity = w_B,
-                        .motion = motion});
+  builder.AddRigidBody(
+      {.name = "body",
+       .mass = 3.0,
+       .inertia = inertia.asDiagonal(),
+       .position = Vector3d(0.5, -1.0, 2.0),
+       .orientation = Matrix3d(Eigen::AngleAxisd(0.4, Vector3d(1, 1, 0).normalized())),
+       .velocity = velocity,
+       .angular_velocity = w_B,
+       .motion = motion});
   return builder.Build();
 }
 
 // Runs and calls `sample` with every output state.
 SolveResult Simulate(const Model& model, const DynamicSettings& settings,
-                const std::function<void(const State&, const EnergyAccount&)>& sample,
-                State* final_state = nullptr) {
+                     const std::function<void(const State&, const EnergyAccount&)>& sample,
+                     State* final_state = nullptr) {
   State state = MakeInitialState(model);
   const SolveResult result = SolveDynamic(model, settings, 0.0, sample, &state);
   EXPECT_TRUE(result.completed) << result.message;
@@ -68,10 +69,11 @@ double TopError(IntegratorType integrator, double rho, double h, double end_time
   const Model model = OneBody(Vector3d(kJ1, kJ1, kJ3), Vector3d(kWobble, 0.0, kSpin));
   const double rate = (kJ3 - kJ1) / kJ1 * kSpin;
   double error = 0.0;
-  Simulate(model, Settings(integrator, rho, h, end_time), [&](const State& s, const EnergyAccount&) {
-    const Vector3d exact(kWobble * std::cos(rate * s.t), kWobble * std::sin(rate * s.t), kSpin);
-    error = std::max(error, (s.v.segment<3>(3) - exact).norm());
-  });
+  Simulate(
+      model, Settings(integrator, rho, h, end_time), [&](const State& s, const EnergyAccount&) {
+        const Vector3d exact(kWobble * std::cos(rate * s.t), kWobble * std::sin(rate * s.t), kSpin);
+        error = std::max(error, (s.v.segment<3>(3) - exact).norm());
+      });
   return error;
 }
 
@@ -90,9 +92,10 @@ TEST(RigidBody, SymmetricTopPrecessesAtTheAnalyticRateWithSecondOrder) {
     const double fine = TopError(c.integrator, c.rho, period / 800.0, end);
     const double finest = TopError(c.integrator, c.rho, period / 3200.0, end);
     const double order = std::log2(coarse / fine);
-    std::printf("%s: max |ω − ω_exact| over 3 periods %.3e (h = T/400), %.3e (T/800), %.3e "
-                "(T/3200); order %.3f\n",
-                c.name, coarse, fine, finest, order);
+    std::printf(
+        "%s: max |ω − ω_exact| over 3 periods %.3e (h = T/400), %.3e (T/800), %.3e "
+        "(T/3200); order %.3f\n",
+        c.name, coarse, fine, finest, order);
     EXPECT_NEAR(order, 2.0, 0.1) << c.name;
     EXPECT_LT(finest, 1e-4) << c.name;
   }
@@ -104,10 +107,10 @@ TEST(RigidBody, SymmetricTopPrecessesAtTheAnalyticRateWithSecondOrder) {
 // ((J₃ − J₂)(M² − 2E J₁)) (Landau & Lifshitz §37); ω₂ changes sign twice a period (the flips).
 
 struct FlipRun {
-  double period = 0.0;           // from the upward zero crossings of ω₂
-  double energy_drift = 0.0;     // max |E − E₀| / E₀
-  double momentum_drift = 0.0;   // max |π − π₀| / |π₀|, π = R J ω (world)
-  double norm_drift = 0.0;       // max ||π| − |π₀|| / |π₀|
+  double period = 0.0;          // from the upward zero crossings of ω₂
+  double energy_drift = 0.0;    // max |E − E₀| / E₀
+  double momentum_drift = 0.0;  // max |π − π₀| / |π₀|, π = R J ω (world)
+  double norm_drift = 0.0;      // max ||π| − |π₀|| / |π₀|
 };
 
 FlipRun RunFlip(IntegratorType integrator, double rho, double h) {
@@ -117,9 +120,8 @@ FlipRun RunFlip(IntegratorType integrator, double rho, double h) {
   const double two_e = j.dot(w0.cwiseProduct(w0));
   const double m2 = j.cwiseProduct(w0).squaredNorm();
   const double k2 = (j[1] - j[0]) * (two_e * j[2] - m2) / ((j[2] - j[1]) * (m2 - two_e * j[0]));
-  const double exact =
-      4.0 * std::comp_ellint_1(std::sqrt(k2)) *
-      std::sqrt(j.prod() / ((j[2] - j[1]) * (m2 - two_e * j[0])));
+  const double exact = 4.0 * std::comp_ellint_1(std::sqrt(k2)) *
+                       std::sqrt(j.prod() / ((j[2] - j[1]) * (m2 - two_e * j[0])));
   FlipRun run;
   std::vector<double> crossings;
   double previous_w2 = w0[1], previous_t = 0.0;
@@ -157,8 +159,8 @@ FlipRun RunFlip(IntegratorType integrator, double rho, double h) {
 
 TEST(RigidBody, DzhanibekovFlipMidpointConservesEnergyAndMomentumNorm) {
   const FlipRun run = RunFlip(IntegratorType::kImplicitMidpoint, 1.0, 2e-3);
-  std::printf("midpoint: energy drift %.2e, |π| drift %.2e, world π drift %.2e\n",
-              run.energy_drift, run.norm_drift, run.momentum_drift);
+  std::printf("midpoint: energy drift %.2e, |π| drift %.2e, world π drift %.2e\n", run.energy_drift,
+              run.norm_drift, run.momentum_drift);
   EXPECT_LT(run.energy_drift, 1e-12);
   EXPECT_LT(run.norm_drift, 1e-12);
   EXPECT_LT(run.momentum_drift, 1e-3);
@@ -176,14 +178,16 @@ TEST(RigidBody, DzhanibekovFlipGeneralizedAlphaDriftsLittle) {
 
 TEST(RigidBody, FreeFallWithConstantSpinIsExact) {
   const Vector3d g(0.0, 0.0, -9.81), v0(1.0, 0.5, 3.0), w(0.0, 0.0, 4.0);
-  for (IntegratorType integrator : {IntegratorType::kGeneralizedAlpha,
-                                    IntegratorType::kImplicitMidpoint,
-                                    IntegratorType::kExplicitVerlet}) {
+  for (IntegratorType integrator :
+       {IntegratorType::kGeneralizedAlpha, IntegratorType::kImplicitMidpoint,
+        IntegratorType::kExplicitVerlet}) {
     const Model model = OneBody(Vector3d(1.0, 1.5, 2.0), w, g, v0);
-    const double balance0 = 0.5 * 3.0 * v0.squaredNorm() + 0.5 * 2.0 * 16.0 - 3.0 * g.dot(Vector3d(0.5, -1.0, 2.0));
+    const double balance0 =
+        0.5 * 3.0 * v0.squaredNorm() + 0.5 * 2.0 * 16.0 - 3.0 * g.dot(Vector3d(0.5, -1.0, 2.0));
     double balance_error = 0.0;
     State state;
-    Simulate(model, Settings(integrator, 0.8, 1e-2, 1.0),
+    Simulate(
+        model, Settings(integrator, 0.8, 1e-2, 1.0),
         [&](const State&, const EnergyAccount& e) {
           balance_error = std::max(balance_error, std::abs(e.kinetic + e.gravity - balance0));
         },
@@ -202,26 +206,27 @@ TEST(RigidBody, PrescribedBodyFollowsItsPath) {
   // With a free point mass tied to it by a spring (the moving body carries it along).
   ModelBuilder builder;
   builder.SetGravity(Vector3d(0, 0, -9.81));
-  builder.AddRigidBody({.name = "body",
-                        .mass = 3.0,
-                        .inertia = Vector3d(1.0, 1.5, 2.0).asDiagonal(),
-                        .position = Vector3d(0.5, -1.0, 2.0),
-                        .orientation = Matrix3d(Eigen::AngleAxisd(0.4, Vector3d(1, 1, 0).normalized())),
-                        .velocity = v,
-                        .angular_velocity = w,
-                        .motion = BodyMotion::kPrescribed});
+  builder.AddRigidBody(
+      {.name = "body",
+       .mass = 3.0,
+       .inertia = Vector3d(1.0, 1.5, 2.0).asDiagonal(),
+       .position = Vector3d(0.5, -1.0, 2.0),
+       .orientation = Matrix3d(Eigen::AngleAxisd(0.4, Vector3d(1, 1, 0).normalized())),
+       .velocity = v,
+       .angular_velocity = w,
+       .motion = BodyMotion::kPrescribed});
   builder.AddPointMass("m", 0.5, Vector3d(1.0, -1.0, 2.0));
   builder.AddBodyAttachment({.name = "a", .body = "body", .point = {"m"}, .stiffness = 50.0});
   const Model model = builder.Build();
   double error = 0.0;
   const Matrix3d r0 = model.rigid_bodies()[0].initial_orientation;
   Simulate(model, Settings(IntegratorType::kGeneralizedAlpha, 0.8, 1e-2, 2.0),
-      [&](const State& s, const EnergyAccount&) {
-        const BodyPose pose = CalcBodyPose(model, s, 0);
-        error = std::max({error, (pose.p_WB - (Vector3d(0.5, -1.0, 2.0) + s.t * v)).norm(),
-                          (pose.R_WB - r0 * ExpRotation(s.t * w)).norm(),
-                          (s.v.segment<3>(3) - w).norm()});
-      });
+           [&](const State& s, const EnergyAccount&) {
+             const BodyPose pose = CalcBodyPose(model, s, 0);
+             error = std::max({error, (pose.p_WB - (Vector3d(0.5, -1.0, 2.0) + s.t * v)).norm(),
+                               (pose.R_WB - r0 * ExpRotation(s.t * w)).norm(),
+                               (s.v.segment<3>(3) - w).norm()});
+           });
   EXPECT_LT(error, 1e-12);
 }
 
@@ -264,13 +269,13 @@ TEST(RigidBody, PendulumFromAFixedBodyPointSwingsAtThePendulumPeriod) {
   double previous_x = end.x() - top.x(), previous_t = 0.0;
   const Index bob_dof = model.point_masses()[0].dof;
   Simulate(model, Settings(IntegratorType::kGeneralizedAlpha, 0.8, h, 2.2 * exact),
-      [&](const State& s, const EnergyAccount&) {
-        const double x = s.q[bob_dof] - top.x();
-        if (previous_x > 0.0 && x <= 0.0)
-          crossings.push_back(previous_t + (s.t - previous_t) * previous_x / (previous_x - x));
-        previous_x = x;
-        previous_t = s.t;
-      });
+           [&](const State& s, const EnergyAccount&) {
+             const double x = s.q[bob_dof] - top.x();
+             if (previous_x > 0.0 && x <= 0.0)
+               crossings.push_back(previous_t + (s.t - previous_t) * previous_x / (previous_x - x));
+             previous_x = x;
+             previous_t = s.t;
+           });
   ASSERT_GE(crossings.size(), 2u);
   const double period = crossings[1] - crossings[0];
   std::printf("pendulum from a body point: period %.6f s, exact %.6f s (%.2e relative)\n", period,
@@ -320,10 +325,11 @@ TEST(RigidBody, PointMassTiedToAFreeBodyConservesMomentumAndEnergy) {
         },
         &state);
     ASSERT_TRUE(result.completed) << result.message;
-    std::printf("tied pair (%s): momentum error %.2e kg m/s, balance drift %.2e J of %.4f J "
-                "(attachment energy up to %.4f J)\n",
-                integrator == IntegratorType::kImplicitMidpoint ? "midpoint" : "gen-alpha 1",
-                momentum_error, balance_error, balance0, strain_max);
+    std::printf(
+        "tied pair (%s): momentum error %.2e kg m/s, balance drift %.2e J of %.4f J "
+        "(attachment energy up to %.4f J)\n",
+        integrator == IntegratorType::kImplicitMidpoint ? "midpoint" : "gen-alpha 1",
+        momentum_error, balance_error, balance0, strain_max);
     EXPECT_LT(momentum_error, 1e-10 * p0.norm() + 1e-12);
     EXPECT_GT(strain_max, 0.05 * balance0);
     EXPECT_LT(balance_error, 1e-4 * balance0);

@@ -88,8 +88,7 @@ void AddBodyJacobians(const Model& model, const VectorXd& q, const VectorXd& v,
 void AddBodyMassMatrix(const Model& model, double scale, SystemMatrix* matrix) {
   const auto& bodies = model.rigid_bodies();
   for (std::size_t b = 0; b < bodies.size(); ++b) {
-    matrix->AddBodyBlock(static_cast<Index>(b), 0, 0, Matrix3d::Identity(),
-                         scale * bodies[b].mass);
+    matrix->AddBodyBlock(static_cast<Index>(b), 0, 0, Matrix3d::Identity(), scale * bodies[b].mass);
     matrix->AddBodyBlock(static_cast<Index>(b), 1, 1, bodies[b].inertia, scale);
   }
 }

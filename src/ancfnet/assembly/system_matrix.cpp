@@ -109,8 +109,7 @@ void SystemMatrix::AddLinkBlock(Index link, int i, int j, const Matrix3d& block,
 }
 
 void SystemMatrix::AddBodyBlock(Index body, int i, int j, const Matrix3d& block, double scale) {
-  AddGroupBlock(groups_[num_elements_ + num_point_masses_ + num_links_ + body], i, j, block,
-                scale);
+  AddGroupBlock(groups_[num_elements_ + num_point_masses_ + num_links_ + body], i, j, block, scale);
 }
 
 void SystemMatrix::AddAttachmentBlock(Index attachment, int i, int j, const Matrix3d& block,

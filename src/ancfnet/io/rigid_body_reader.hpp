@@ -1,7 +1,8 @@
 #pragma once
 /// @file Reads the `bodies` and `attachments` lists of a scene (model/rigid_body.hpp):
 ///   bodies: [{name, mass, inertia: [J1, J2, J3] | [[..], [..], [..]], position,
-///             orientation: {matrix: [[..], [..], [..]]} | {axis, angle} | {quaternion: [w, x, y, z]},
+///             orientation: {matrix: [[..], [..], [..]]} | {axis, angle}
+///                        | {quaternion: [w, x, y, z]},
 ///             velocity, angular_velocity, angular_velocity_frame: body | world,
 ///             motion: free | fixed | prescribed}]
 ///   attachments: [{name, body, point: POINT, body_point: [sx, sy, sz], stiffness, damping}]

@@ -130,8 +130,7 @@ struct DistributedLoad {
 
 /// The system description. Coordinates are numbered in the order things are added: six per
 /// cable node (r, r'; three when the position is a knot's), three per point mass, six per rigid
-/// body (x, ψ). A coordinate is
-/// either free (an unknown) or fixed at its initial value.
+/// body (x, ψ). A coordinate is either free (an unknown) or fixed at its initial value.
 class Model {
  public:
   Index num_dofs() const { return static_cast<Index>(initial_positions_.size()); }

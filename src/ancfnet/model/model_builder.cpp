@@ -285,8 +285,7 @@ Index ModelBuilder::AddRigidBody(const RigidBodySpec& spec) {
   RequireFinite(spec.velocity, "body velocity");
   RequireFinite(spec.angular_velocity, "body angular velocity");
   // Exactly orthonormal, so that round-off in the input does not act as a strain of R.
-  const Matrix3d orientation =
-      Eigen::Quaterniond(spec.orientation).normalized().toRotationMatrix();
+  const Matrix3d orientation = Eigen::Quaterniond(spec.orientation).normalized().toRotationMatrix();
   VectorXd initial(6);
   initial << spec.position, Vector3d::Zero();
   const Index dof = AddCoordinates(initial);
@@ -330,9 +329,8 @@ void ModelBuilder::AddBodyAttachment(const BodyAttachmentSpec& spec) {
   const Index b = model_.FindRigidBody(spec.body);
   if (b < 0) throw InputError(fmt::format("no rigid body named '{}'", spec.body));
   const RigidBody& body = model_.rigid_bodies_[b];
-  BodyAttachment attachment{.name = spec.name,
-                            .point = model_.LocatePoint(spec.point.cable, spec.point.s),
-                            .body = b};
+  BodyAttachment attachment{
+      .name = spec.name, .point = model_.LocatePoint(spec.point.cable, spec.point.s), .body = b};
   if (spec.body_point) {
     RequireFinite(*spec.body_point, "attachment body point");
     attachment.body_point = *spec.body_point;
@@ -345,8 +343,8 @@ void ModelBuilder::AddBodyAttachment(const BodyAttachmentSpec& spec) {
   const double point_mass = PointMassOf(spec.point);
   const double body_mass =
       body.motion == BodyMotion::kFree ? body.mass : std::numeric_limits<double>::infinity();
-  const double reduced = std::isinf(body_mass) ? point_mass
-                                               : point_mass * body_mass / (point_mass + body_mass);
+  const double reduced =
+      std::isinf(body_mass) ? point_mass : point_mass * body_mass / (point_mass + body_mass);
   if (spec.stiffness) {
     RequirePositive(*spec.stiffness, "attachment stiffness");
     attachment.stiffness = *spec.stiffness;

@@ -22,13 +22,13 @@ enum class BodyMotion {
 /// A body as given to ModelBuilder::AddRigidBody.
 struct RigidBodySpec {
   std::string name;
-  double mass = 0.0;                                ///< m (kg), > 0
-  Matrix3d inertia = Matrix3d::Identity();          ///< J_B about the centre of mass (kg m²)
-  Vector3d position = Vector3d::Zero();             ///< x_WB of the centre of mass (m)
-  Matrix3d orientation = Matrix3d::Identity();      ///< R_WB (a rotation matrix)
-  Vector3d velocity = Vector3d::Zero();             ///< ẋ_WB (m/s, world)
-  Vector3d angular_velocity = Vector3d::Zero();     ///< ω (rad/s), in the frame below
-  bool angular_velocity_in_world = false;           ///< ω given in world axes (ω_B = R_WBᵀ ω_W)
+  double mass = 0.0;                             ///< m (kg), > 0
+  Matrix3d inertia = Matrix3d::Identity();       ///< J_B about the centre of mass (kg m²)
+  Vector3d position = Vector3d::Zero();          ///< x_WB of the centre of mass (m)
+  Matrix3d orientation = Matrix3d::Identity();   ///< R_WB (a rotation matrix)
+  Vector3d velocity = Vector3d::Zero();          ///< ẋ_WB (m/s, world)
+  Vector3d angular_velocity = Vector3d::Zero();  ///< ω (rad/s), in the frame below
+  bool angular_velocity_in_world = false;        ///< ω given in world axes (ω_B = R_WBᵀ ω_W)
   BodyMotion motion = BodyMotion::kFree;
 };
 
@@ -36,7 +36,7 @@ struct RigidBodySpec {
 struct RigidBody {
   std::string name;
   double mass = 0.0;
-  Matrix3d inertia = Matrix3d::Identity();           ///< J_B (kg m²), SPD
+  Matrix3d inertia = Matrix3d::Identity();              ///< J_B (kg m²), SPD
   Matrix3d initial_orientation = Matrix3d::Identity();  ///< R_WB at t = 0
   BodyMotion motion = BodyMotion::kFree;
   Index dof = 0;

@@ -60,8 +60,9 @@ void RebaseBodyRotations(const Model& model, State* state) {
     if (bodies[b].motion != BodyMotion::kFree) continue;
     auto psi = state->q.segment<3>(bodies[b].rotation_dof());
     // Through a unit quaternion, so that round-off does not accumulate in RᵀR = I.
-    state->body_rotation[b] =
-        Eigen::Quaterniond(state->body_rotation[b] * ExpRotation(psi)).normalized().toRotationMatrix();
+    state->body_rotation[b] = Eigen::Quaterniond(state->body_rotation[b] * ExpRotation(psi))
+                                  .normalized()
+                                  .toRotationMatrix();
     psi.setZero();
   }
 }

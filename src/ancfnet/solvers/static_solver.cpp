@@ -3,8 +3,8 @@
 #include <fmt/format.h>
 
 #include "ancfnet/analysis/energy_tracker.hpp"
-#include "ancfnet/common/error.hpp"
 #include "ancfnet/assembly/forces.hpp"
+#include "ancfnet/common/error.hpp"
 #include "ancfnet/solvers/newton.hpp"
 
 namespace ancfnet {

@@ -1,9 +1,10 @@
 // The attachment's and the gyroscopic term's Jacobians against central finite differences, the
 // rotation perturbed as R_ref exp(ψ̃) about ψ = 0, where the tangent operator is exactly I.
 
+#include "ancfnet/forces/body_attachment.hpp"
+
 #include <gtest/gtest.h>
 
-#include "ancfnet/forces/body_attachment.hpp"
 #include "ancfnet/forces/gyroscopic_force.hpp"
 
 namespace ancfnet {
@@ -12,14 +13,14 @@ namespace {
 // Generalised forces of an attachment at coordinates z = (p, x, ψ) and rates z_dot = (ṗ, ẋ, ω).
 Vector9d Forces(const Vector9d& z, const Vector9d& z_dot, const Matrix3d& rotation_ref,
                 BodyAttachmentResult* full = nullptr) {
-  const BodyAttachmentResult r = CalcBodyAttachment(
-      {.p = z.segment<3>(0),
-       .p_dot = z_dot.segment<3>(0),
-       .pose = {z.segment<3>(3), rotation_ref * ExpRotation(z.segment<3>(6))},
-       .velocity = {z_dot.segment<3>(3), z_dot.segment<3>(6)},
-       .s_B = Vector3d(0.3, -0.2, 0.5),
-       .stiffness = 250.0,
-       .damping = 7.0});
+  const BodyAttachmentResult r =
+      CalcBodyAttachment({.p = z.segment<3>(0),
+                          .p_dot = z_dot.segment<3>(0),
+                          .pose = {z.segment<3>(3), rotation_ref * ExpRotation(z.segment<3>(6))},
+                          .velocity = {z_dot.segment<3>(3), z_dot.segment<3>(6)},
+                          .s_B = Vector3d(0.3, -0.2, 0.5),
+                          .stiffness = 250.0,
+                          .damping = 7.0});
   if (full) *full = r;
   return r.generalized;
 }
@@ -36,10 +37,10 @@ TEST(BodyAttachment, JacobiansMatchFiniteDifferences) {
   for (int j = 0; j < 9; ++j) {
     Vector9d dz = Vector9d::Zero();
     dz[j] = eps;
-    const Vector9d k_fd = (Forces(z + dz, z_dot, rotation_ref) -
-                           Forces(z - dz, z_dot, rotation_ref)) / (2.0 * eps);
-    const Vector9d c_fd = (Forces(z, z_dot + dz, rotation_ref) -
-                           Forces(z, z_dot - dz, rotation_ref)) / (2.0 * eps);
+    const Vector9d k_fd =
+        (Forces(z + dz, z_dot, rotation_ref) - Forces(z - dz, z_dot, rotation_ref)) / (2.0 * eps);
+    const Vector9d c_fd =
+        (Forces(z, z_dot + dz, rotation_ref) - Forces(z, z_dot - dz, rotation_ref)) / (2.0 * eps);
     EXPECT_LT((k_fd - r.stiffness.col(j)).norm(), 1e-6 * r.stiffness.norm()) << "column " << j;
     EXPECT_LT((c_fd - r.damping.col(j)).norm(), 1e-6 * r.damping.norm()) << "column " << j;
   }
@@ -58,8 +59,9 @@ TEST(BodyAttachment, ForcesBalanceAndEnergyIsHalfKDSquared) {
   const Vector3d d = z.segment<3>(0) - (z.segment<3>(3) + rotation * s);
   EXPECT_NEAR(r.energy, 0.5 * 250.0 * d.squaredNorm(), 1e-12);
   EXPECT_LT((r.force_on_point + 250.0 * d).norm(), 1e-12);
-  EXPECT_LT((q.segment<3>(6) - rotation.transpose() * (rotation * s).cross(r.force_on_point)).norm(),
-            1e-12);
+  EXPECT_LT(
+      (q.segment<3>(6) - rotation.transpose() * (rotation * s).cross(r.force_on_point)).norm(),
+      1e-12);
 }
 
 TEST(BodyAttachment, FixedStiffnessIsReducedMassTimesTenOverStepSquared) {

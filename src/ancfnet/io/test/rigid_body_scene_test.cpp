@@ -62,9 +62,9 @@ TEST(RigidBodyScene, ReadsBodiesAttachmentsAndProbes) {
   EXPECT_EQ(target.motion, BodyMotion::kFree);
   EXPECT_EQ(model.rigid_bodies()[1].motion, BodyMotion::kFixed);
   // Turned 90° about z: ω_W = x is ω_B = −y.
-  EXPECT_LT((model.initial_velocities().segment<3>(target.rotation_dof()) - Vector3d(0, -1, 0))
-                .norm(),
-            1e-12);
+  EXPECT_LT(
+      (model.initial_velocities().segment<3>(target.rotation_dof()) - Vector3d(0, -1, 0)).norm(),
+      1e-12);
   ASSERT_EQ(model.body_attachments().size(), 2u);
   const BodyAttachment& hook = model.body_attachments()[0];
   // Where the bob is, in body axes: R_WBᵀ (0, 0, −1) = (0, 0, −1); fixed: k = m_eff (10/h)².

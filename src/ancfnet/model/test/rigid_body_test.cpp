@@ -12,11 +12,11 @@ namespace ancfnet {
 namespace {
 
 TEST(RigidBodyKinematics, RodriguesMatchesAngleAxisAndSeries) {
-  for (const Vector3d& psi : {Vector3d(0.3, -1.2, 2.0), Vector3d(1e-5, 2e-5, -1e-5),
-                              Vector3d(0.0, 0.0, 3.1)}) {
-    const Matrix3d expected =
-        psi.norm() > 0.0 ? Matrix3d(Eigen::AngleAxisd(psi.norm(), psi.normalized()))
-                         : Matrix3d::Identity();
+  for (const Vector3d& psi :
+       {Vector3d(0.3, -1.2, 2.0), Vector3d(1e-5, 2e-5, -1e-5), Vector3d(0.0, 0.0, 3.1)}) {
+    const Matrix3d expected = psi.norm() > 0.0
+                                  ? Matrix3d(Eigen::AngleAxisd(psi.norm(), psi.normalized()))
+                                  : Matrix3d::Identity();
     EXPECT_LT((ExpRotation(psi) - expected).norm(), 1e-15 + 1e-14 * psi.norm());
   }
   EXPECT_LT((ExpRotation(Vector3d::Zero()) - Matrix3d::Identity()).norm(), 1e-16);
@@ -24,7 +24,8 @@ TEST(RigidBodyKinematics, RodriguesMatchesAngleAxisAndSeries) {
 
 TEST(RigidBodyKinematics, PointVelocityMapIsTheDerivativeOfTheBodyPoint) {
   // p(t) = x(t) + R(t) s with ẋ = v, R(t) = R₀ exp(t ω̃): ṗ = G (v, ω) at t = 0.
-  const Matrix3d r0 = Eigen::AngleAxisd(0.8, Vector3d(1.0, -1.0, 2.0).normalized()).toRotationMatrix();
+  const Matrix3d r0 =
+      Eigen::AngleAxisd(0.8, Vector3d(1.0, -1.0, 2.0).normalized()).toRotationMatrix();
   const Vector3d x0(1.0, 2.0, -0.5), v(0.3, -0.1, 0.4), w(1.3, -0.6, 0.9), s(0.4, 0.2, -0.7);
   const auto point = [&](double t) { return Vector3d(x0 + t * v + r0 * ExpRotation(t * w) * s); };
   const double eps = 1e-6;
