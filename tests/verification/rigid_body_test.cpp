@@ -16,6 +16,7 @@
 #include "ancfnet/model/model_builder.hpp"
 #include "ancfnet/model/rigid_body_kinematics.hpp"
 #include "ancfnet/solvers/dynamic_solver.hpp"
+#include "ancfnet/solvers/static_solver.hpp"
 
 namespace ancfnet {
 namespace {
@@ -228,6 +229,32 @@ TEST(RigidBody, PrescribedBodyFollowsItsPath) {
                                (s.v.segment<3>(3) - w).norm()});
            });
   EXPECT_LT(error, 1e-12);
+}
+
+// A point mass hanging statically from a point of a fixed, turned body on a spring k: it sits
+// m g / k below the body point, y = x + R s_B.
+TEST(RigidBody, StaticMassHangsFromAFixedBodyPoint) {
+  const double mass = 2.0, k = 500.0, g = 9.81;
+  ModelBuilder builder;
+  builder.SetGravity(Vector3d(0.0, 0.0, -g));
+  const Matrix3d r = Matrix3d(Eigen::AngleAxisd(1.2, Vector3d(1.0, -0.5, 0.3).normalized()));
+  const Vector3d x(1.0, 2.0, 3.0), s_B(0.2, 0.4, -0.3);
+  builder.AddRigidBody({.name = "hub",
+                        .mass = 50.0,
+                        .inertia = Matrix3d::Identity(),
+                        .position = x,
+                        .orientation = r,
+                        .motion = BodyMotion::kFixed});
+  builder.AddPointMass("m", mass, x + r * s_B);
+  builder.AddBodyAttachment({.name = "spring", .body = "hub", .point = {"m"}, .body_point = s_B,
+                             .stiffness = k});
+  const Model model = builder.Build();
+  State state = MakeInitialState(model);
+  const SolveResult result =
+      SolveStatic(model, {}, [](const State&, const EnergyAccount&) {}, &state);
+  ASSERT_TRUE(result.completed) << result.message;
+  const Vector3d expected = x + r * s_B - Vector3d(0.0, 0.0, mass * g / k);
+  EXPECT_LT((state.q.segment<3>(model.point_masses()[0].dof) - expected).norm(), 1e-10);
 }
 
 // ---------------------------------------------------------------------------------------------
