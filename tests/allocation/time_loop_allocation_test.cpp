@@ -154,8 +154,8 @@ long CountBodyLoopAllocations() {
                     .end = Vector3d(2.5, 0.0, 0.0),
                     .num_elements = 4,
                     .properties = cord});
-  builder.AddBodyAttachment({.name = "hook", .body = "target", .point = {"cord", 0.0},
-                             .stiffness = 1e4, .damping = 1.0});
+  builder.AddBodyAttachment(
+      {.name = "hook", .body = "target", .point = {"cord", 0.0}, .stiffness = 1e4, .damping = 1.0});
   const Model model = builder.Build();
   Integrator integrator(model, DynamicSettings{});
   State state = MakeInitialState(model);

@@ -246,12 +246,12 @@ TEST(RigidBody, StaticMassHangsFromAFixedBodyPoint) {
                         .orientation = r,
                         .motion = BodyMotion::kFixed});
   builder.AddPointMass("m", mass, x + r * s_B);
-  builder.AddBodyAttachment({.name = "spring", .body = "hub", .point = {"m"}, .body_point = s_B,
-                             .stiffness = k});
+  builder.AddBodyAttachment(
+      {.name = "spring", .body = "hub", .point = {"m"}, .body_point = s_B, .stiffness = k});
   const Model model = builder.Build();
   State state = MakeInitialState(model);
-  const SolveResult result =
-      SolveStatic(model, {}, [](const State&, const EnergyAccount&) {}, &state);
+  const SolveResult result = SolveStatic(
+      model, {}, [](const State&, const EnergyAccount&) {}, &state);
   ASSERT_TRUE(result.completed) << result.message;
   const Vector3d expected = x + r * s_B - Vector3d(0.0, 0.0, mass * g / k);
   EXPECT_LT((state.q.segment<3>(model.point_masses()[0].dof) - expected).norm(), 1e-10);

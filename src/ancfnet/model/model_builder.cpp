@@ -478,6 +478,10 @@ Model ModelBuilder::Build() const {
     throw InputError("the model has no cable, no point mass and no rigid body");
   if (model_.orbital_frame_ && !model_.rigid_bodies_.empty())
     throw InputError("rigid bodies are not available in an orbital (Hill) frame yet");
+  if (model_.damping_.modal.num_modes > 0 && model_.has_free_bodies())
+    throw InputError(
+        "modal damping needs the modes of the model, which free rigid bodies do not have; use "
+        "Rayleigh damping or make the bodies fixed");
   Model model = model_;
   // A fixed coordinate does not move, unless it belongs to a moving point mass.
   for (Index i = 0; i < model.num_dofs(); ++i)

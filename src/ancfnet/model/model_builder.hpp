@@ -101,7 +101,8 @@ class ModelBuilder {
   /// Its name is unique among cables, point masses and bodies; mass > 0; inertia SPD with
   /// principal moments satisfying the triangle inequality; orientation a rotation matrix. A
   /// prescribed body moves as x(t) = x₀ + v t, R(t) = R₀ exp(t ω̃_B) (its coordinates are
-  /// eliminated and ψ = t ω_B). Gravity acts on free bodies. Not with an orbital frame (yet).
+  /// eliminated and ψ = t ω_B). Gravity acts on free bodies. Bodies exclude an orbital frame (not
+  /// yet), free bodies modal damping (Build throws); Rayleigh damping acts on the cables only.
   Index AddRigidBody(const RigidBodySpec& spec);
   /// Ties a point to a body point (BodyAttachmentSpec).
   void AddBodyAttachment(const BodyAttachmentSpec& spec);

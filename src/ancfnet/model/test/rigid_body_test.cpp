@@ -114,6 +114,20 @@ TEST(RigidBody, BadDescriptionsAreRefused) {
   }
 }
 
+TEST(RigidBody, OrbitalFrameAndModalDampingAreRefusedWithBodies) {
+  ModelBuilder orbital;
+  orbital.SetOrbitalFrame(1e-3);
+  orbital.AddRigidBody({.name = "b", .mass = 1.0, .inertia = Matrix3d::Identity()});
+  EXPECT_THROW(orbital.Build(), InputError);
+  ModelBuilder damped;
+  damped.AddRigidBody({.name = "b", .mass = 1.0, .inertia = Matrix3d::Identity()});
+  ModalDamping modal;
+  modal.num_modes = 1;
+  modal.ratios = {0.01};
+  damped.SetModalDamping(modal);
+  EXPECT_THROW(damped.Build(), InputError);
+}
+
 TEST(RigidBody, AttachmentsNeedAKnownBodyAndAStepForTheDefaultStiffness) {
   ModelBuilder builder;
   builder.AddRigidBody({.name = "b", .mass = 2.0, .inertia = Matrix3d::Identity()});
