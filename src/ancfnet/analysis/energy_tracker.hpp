@@ -56,6 +56,7 @@ class EnergyTracker {
   EnergyQuadrature quadrature_;
   VectorXd v_;
   double power_ = 0.0;  // q̇ᵀ Q_visc at the last state (kTrapezoidal)
+  std::vector<Index> rebased_;  // rotation coordinates of free bodies (ψ reset to 0 every step)
 };
 
 }  // namespace ancfnet
