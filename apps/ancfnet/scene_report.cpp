@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <string>
 #include <vector>
@@ -46,6 +47,15 @@ void PrintSceneReport(const Scene& scene, std::FILE* out) {
                cable.properties.bending_stiffness, cable.properties.mass_per_length,
                cable.properties.tension_only ? ", tension only" : "");
   }
+  constexpr const char* kMotion[] = {"free", "fixed", "prescribed"};
+  for (const RigidBody& body : model.rigid_bodies()) {
+    const Vector3d moments = Eigen::SelfAdjointEigenSolver<Matrix3d>(body.inertia).eigenvalues();
+    fmt::print(out, "  body {}: {:.6g} kg, principal moments [{:.6g}, {:.6g}, {:.6g}] kg m², {}\n",
+               body.name, body.mass, moments[0], moments[1], moments[2],
+               kMotion[static_cast<int>(body.motion)]);
+  }
+  if (!model.body_attachments().empty())
+    fmt::print(out, "  {} body attachments\n", model.body_attachments().size());
   fmt::print(out, "  {} coordinates, {} fixed, {} unknowns; total mass {:.6g} kg\n",
              model.num_dofs(), fixed, model.num_dofs() - fixed, model.total_mass());
   fmt::print(

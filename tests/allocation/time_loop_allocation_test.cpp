@@ -138,6 +138,45 @@ TEST(TimeLoopAllocation, ImplicitMidpointWithRayleighAndModalDamping) {
   EXPECT_EQ(count, 0) << "heap requests in 40 midpoint steps with damping models";
 }
 
+// A spinning free body with the flexible pendulum's cable tied to it (gyroscopic term,
+// attachment forces and Jacobians, the rotation rebase every step).
+template <class Integrator>
+long CountBodyLoopAllocations() {
+  const CableProperties cord{
+      .axial_stiffness = 1e5, .bending_stiffness = 1e-2, .mass_per_length = 0.1};
+  ModelBuilder builder;
+  builder.AddRigidBody({.name = "target",
+                        .mass = 10.0,
+                        .inertia = Vector3d(1.0, 2.0, 2.5).asDiagonal(),
+                        .angular_velocity = Vector3d(0.1, 2.0, 0.1)});
+  builder.AddCable({.name = "cord",
+                    .start = Vector3d(0.5, 0.0, 0.0),
+                    .end = Vector3d(2.5, 0.0, 0.0),
+                    .num_elements = 4,
+                    .properties = cord});
+  builder.AddBodyAttachment(
+      {.name = "hook", .body = "target", .point = {"cord", 0.0}, .stiffness = 1e4, .damping = 1.0});
+  const Model model = builder.Build();
+  Integrator integrator(model, DynamicSettings{});
+  State state = MakeInitialState(model);
+  EXPECT_TRUE(integrator.Initialize(&state));
+  EnergyTracker energy(model, integrator.workspace(), state, 1.0, Integrator::kEnergyQuadrature);
+  EXPECT_TRUE(integrator.Step(1e-3, &state).accepted);
+  return CountAllocations([&] {
+    for (int i = 0; i < 40; ++i) {
+      EXPECT_TRUE(integrator.Step(i % 10 < 5 ? 1e-3 : 5e-4, &state).accepted);
+      energy.Advance(model, integrator.workspace(), state, 1.0);
+    }
+  });
+}
+
+TEST(TimeLoopAllocation, RigidBodyWithAttachedCable) {
+  EXPECT_EQ(CountBodyLoopAllocations<GeneralizedAlphaIntegrator>(), 0)
+      << "heap requests in 40 generalised-α steps with a body";
+  EXPECT_EQ(CountBodyLoopAllocations<ImplicitMidpointIntegrator>(), 0)
+      << "heap requests in 40 midpoint steps with a body";
+}
+
 TEST(TimeLoopAllocation, ExplicitVerlet) {
   const Model model = verification::MakePendulum(8);
   ExplicitVerletIntegrator integrator(model);

@@ -1,5 +1,6 @@
 #include "ancfnet/analysis/energy_tracker.hpp"
 
+#include "ancfnet/assembly/body_forces.hpp"
 #include "ancfnet/assembly/link_forces.hpp"
 #include "ancfnet/forces/orbital_frame.hpp"
 
@@ -13,14 +14,15 @@ double CalcKineticEnergy(const Model& model, const Workspace& ws, const VectorXd
   }
   for (const PointMass& point : model.point_masses())
     energy += 0.5 * point.mass * v.segment<3>(point.dof).squaredNorm();
-  return energy;
+  return energy + CalcBodyKineticEnergy(model, v);
 }
 
 double CalcStrainEnergy(const Model& model, const Workspace& ws, const VectorXd& q) {
   double energy = 0.0;
   for (const CableElement& element : model.elements())
     energy += CalcCableStrainEnergy(element.parameters, model.Gather(element, q));
-  return energy + CalcLinkEnergy(model, ws, q) + ws.contact_energy;
+  return energy + CalcLinkEnergy(model, ws, q) + CalcAttachmentEnergy(model, ws, q) +
+         ws.contact_energy;
 }
 
 EnergyTracker::EnergyTracker(const Model& model, const Workspace& ws, const State& state,
@@ -32,6 +34,9 @@ EnergyTracker::EnergyTracker(const Model& model, const Workspace& ws, const Stat
       quadrature_(quadrature),
       v_(state.v),
       power_(state.v.dot(ws.viscous_force)) {
+  for (const RigidBody& body : model.rigid_bodies())
+    if (body.motion == BodyMotion::kFree)
+      for (int k = 0; k < 3; ++k) rebased_.push_back(body.rotation_dof() + k);
   account_.strain = CalcStrainEnergy(model, ws, state.q);
   // Gravity and the tidal potential of an orbital frame; "0.0 −" gives +0, not −0, without them.
   account_.gravity =
@@ -48,11 +53,15 @@ void EnergyTracker::Advance(const Model& model, const Workspace& ws, const State
   const double w_now = 1.0 - w_then;
   double work = 0.0;
   double dissipated = 0.0;
-  for (Index i = 0; i < q.size(); ++i) {
-    const double dq = q[i] - q_[i];
+  const auto add = [&](Index i, double dq) {
     work += (w_then * applied_[i] + w_now * ws.applied_force[i]) * dq;
     if (midpoint) dissipated += ws.viscous_force[i] * dq;
-  }
+  };
+  for (Index i = 0; i < q.size(); ++i) add(i, q[i] - q_[i]);
+  // A free body's ψ is back at 0 after the rebase: its increment is h (ω_n + ω_{n+1})/2 (exact for
+  // the midpoint rule, whose ψ_{n+1} = h ω_{n+½}).
+  const double h = state.t - t_;
+  for (Index i : rebased_) add(i, 0.5 * h * (v_[i] + state.v[i]) - (q[i] - q_[i]));
   const double power = state.v.dot(ws.viscous_force);
   if (quadrature_ == EnergyQuadrature::kTrapezoidal)
     dissipated = 0.5 * (state.t - t_) * (power_ + power);

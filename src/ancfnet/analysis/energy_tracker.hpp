@@ -9,9 +9,10 @@
 
 namespace ancfnet {
 
-/// Kinetic energy ½ Σ v_eᵀ M_e v_e (J).
+/// Kinetic energy ½ Σ v_eᵀ M_e v_e, with ½ m |ẋ|² + ½ ωᵀ J_B ω of every rigid body (J).
 double CalcKineticEnergy(const Model& model, const Workspace& ws, const VectorXd& v);
-/// Strain energy Σ U_e(q) of the cable elements plus the energy stored in the intact links and,
+/// Strain energy Σ U_e(q) of the cable elements plus the energy stored in the intact links, the
+/// body attachments (with the reference orientations in ws.body_rotation) and,
 /// as last evaluated into ws.contact_energy, in the contacts (J).
 double CalcStrainEnergy(const Model& model, const Workspace& ws, const VectorXd& q);
 
@@ -55,6 +56,7 @@ class EnergyTracker {
   EnergyQuadrature quadrature_;
   VectorXd v_;
   double power_ = 0.0;  // q̇ᵀ Q_visc at the last state (kTrapezoidal)
+  std::vector<Index> rebased_;  // rotation coordinates of free bodies (ψ reset to 0 every step)
 };
 
 }  // namespace ancfnet

@@ -1,5 +1,7 @@
 #include "ancfnet/analysis/momentum.hpp"
 
+#include "ancfnet/model/rigid_body_kinematics.hpp"
+
 namespace ancfnet {
 
 Vector3d CalcLinearMomentum(const Model& model, const Workspace& ws, const VectorXd& v) {
@@ -11,6 +13,8 @@ Vector3d CalcLinearMomentum(const Model& model, const Workspace& ws, const Vecto
     p += force.segment<3>(0) + force.segment<3>(6);
   }
   for (const PointMass& point : model.point_masses()) p += point.mass * v.segment<3>(point.dof);
+  for (const RigidBody& body : model.rigid_bodies())
+    p += body.mass * v.segment<3>(body.position_dof());
   return p;
 }
 
@@ -28,6 +32,13 @@ Vector3d CalcAngularMomentum(const Model& model, const Workspace& ws, const Vect
   }
   for (const PointMass& point : model.point_masses())
     angular += point.mass * Vector3d(q.segment<3>(point.dof)).cross(Vector3d(v.segment<3>(point.dof)));
+  const auto& bodies = model.rigid_bodies();
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const BodyPose pose = CalcBodyPose(bodies[b], q, ws.body_rotation[b]);
+    const Vector3d w_B = v.segment<3>(bodies[b].rotation_dof());
+    angular += bodies[b].mass * pose.p_WB.cross(Vector3d(v.segment<3>(bodies[b].position_dof()))) +
+               pose.R_WB * (bodies[b].inertia * w_B);
+  }
   return angular;
 }
 

@@ -2,7 +2,8 @@
 /// @file Linear and angular momentum of the whole system. For a cable element r = Σ_i S_i e_i
 /// over its four blocks and M_e = M₄ ⊗ I₃ with (M₄)_ij = ∫ ρA S_i S_j, so, exactly,
 ///   p = ∫ ρA ṙ = Σ_j (M₄,₁j + M₄,₃j) ė_j   (S₁ + S₃ = 1),   L = ∫ ρA r × ṙ = Σ_ij (M₄)_ij e_i × ė_j;
-/// point masses add m ṙ and m r × ṙ.
+/// point masses add m ṙ and m r × ṙ, rigid bodies m ẋ and m x × ẋ + R_WB J_B ω_B (with the
+/// reference orientations in ws.body_rotation).
 
 #include "ancfnet/model/model.hpp"
 #include "ancfnet/state/workspace.hpp"

@@ -4,6 +4,7 @@
 
 #include "ancfnet/analysis/net_metrics.hpp"
 #include "ancfnet/assembly/link_forces.hpp"
+#include "ancfnet/model/rigid_body_kinematics.hpp"
 
 namespace ancfnet {
 
@@ -28,6 +29,10 @@ std::vector<std::string> ProbeColumns(const Probe& probe) {
       return {n + ".tension", n + ".thread"};
     case ProbeQuantity::kLinkForce:
       return {n + ".tension", n + ".fx", n + ".fy", n + ".fz"};
+    case ProbeQuantity::kBodyPose:
+      return {n + ".x", n + ".y", n + ".z", n + ".qw", n + ".qx", n + ".qy", n + ".qz"};
+    case ProbeQuantity::kBodyVelocity:
+      return {n + ".vx", n + ".vy", n + ".vz", n + ".wx", n + ".wy", n + ".wz"};
   }
   return {};
 }
@@ -101,6 +106,20 @@ void EvaluateProbe(const Probe& probe, const Model& model, const State& state,
       const SpringDamperResult r = CalcLinkState(model.links()[probe.link], state.q, state.v);
       values->insert(values->end(),
                      {r.tension, r.force_on_2.x(), r.force_on_2.y(), r.force_on_2.z()});
+      break;
+    }
+    case ProbeQuantity::kBodyPose: {
+      const BodyPose pose = CalcBodyPose(model, state, probe.body);
+      Eigen::Quaterniond quaternion(pose.R_WB);
+      if (quaternion.w() < 0.0) quaternion.coeffs() *= -1.0;
+      values->insert(values->end(), {pose.p_WB.x(), pose.p_WB.y(), pose.p_WB.z(), quaternion.w(),
+                                     quaternion.x(), quaternion.y(), quaternion.z()});
+      break;
+    }
+    case ProbeQuantity::kBodyVelocity: {
+      const BodyVelocity v = CalcBodyVelocity(model.rigid_bodies()[probe.body], state.v);
+      values->insert(values->end(),
+                     {v.v_WB.x(), v.v_WB.y(), v.v_WB.z(), v.w_B.x(), v.w_B.y(), v.w_B.z()});
       break;
     }
   }

@@ -20,17 +20,24 @@ enum class ProbeQuantity {
   kDistance,          ///< NAME.distance: travel of that centroid along the net's axis (m)
   kMaxTension,  ///< NAME.tension, NAME.thread: largest thread tension of a net (N) and its thread
   kLinkForce,   ///< NAME.tension, NAME.fx/fy/fz: a link's tension T (N) and force on its 2nd point
+  /// NAME.x/y/z, NAME.qw/qx/qy/qz: a rigid body's position x_WB (m) and orientation R_WB as a unit
+  /// quaternion (qw ≥ 0)
+  kBodyPose,
+  /// NAME.vx/vy/vz, NAME.wx/wy/wz: a rigid body's velocity ẋ_WB (m/s, world) and angular
+  /// velocity ω_B (rad/s, body frame)
+  kBodyVelocity,
 };
 
 /// A named probe. Position and velocity probes read a point (a cable material point or a point
 /// mass); energy probes read the whole system; net probes read net `net`; link probes link `link`
-/// (0 once it has failed).
+/// (0 once it has failed); body probes body `body`.
 struct Probe {
   std::string name;
   ProbeQuantity quantity = ProbeQuantity::kPosition;
   PointLocation point;
   Index net = -1;
   Index link = -1;
+  Index body = -1;
   Vector3d reference = Vector3d::Zero();  ///< kDistance: the centroid at the start
 };
 

@@ -1,5 +1,6 @@
 #include "ancfnet/assembly/forces.hpp"
 
+#include "ancfnet/assembly/body_forces.hpp"
 #include "ancfnet/assembly/link_forces.hpp"
 #include "ancfnet/elements/hermite_shape.hpp"
 #include "ancfnet/forces/orbital_frame.hpp"
@@ -54,6 +55,7 @@ void CalcInternalForces(const Model& model, const VectorXd& q, const VectorXd& v
     ScatterAdd(elements[e], ws.element_viscous_force[e], &ws.viscous_force);
   }
   AddLinkForces(model, q, v, ws);
+  AddBodyForces(model, q, v, ws);
   AddOrbitalFrameForces(model, q, v, ws);
 }
 
@@ -99,9 +101,14 @@ void AssembleIterationMatrix(const Model& model, const VectorXd& q, const Vector
   }
   AddLinkForces(model, q, v, ws);
   AddLinkJacobians(model, q, v, weights, ws, matrix);
+  AddBodyForces(model, q, v, ws);
+  AddBodyJacobians(model, q, v, weights, ws, matrix);
   AddOrbitalFrameForces(model, q, v, ws);
   AddOrbitalFrameJacobians(model, ws, weights.stiffness, weights.damping, matrix);
-  if (weights.mass != 0.0) AddPointMassMatrix(model, weights.mass, matrix);
+  if (weights.mass != 0.0) {
+    AddPointMassMatrix(model, weights.mass, matrix);
+    AddBodyMassMatrix(model, weights.mass, matrix);
+  }
   // Point moments depend on the slope: −c_K λ ∂Q_ext/∂q.
   for (const PointMoment& load : model.point_moments()) {
     const Index slope = model.NodeSlopeDof(load.node);
@@ -115,6 +122,7 @@ void AssembleMassMatrix(const Model& model, const Workspace& ws, SystemMatrix* m
   for (std::size_t e = 0; e < model.elements().size(); ++e)
     matrix->AddElementBlock(static_cast<Index>(e), ws.element_mass[e]);
   AddPointMassMatrix(model, 1.0, matrix);
+  AddBodyMassMatrix(model, 1.0, matrix);
 }
 
 }  // namespace ancfnet

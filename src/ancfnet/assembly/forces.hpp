@@ -10,7 +10,7 @@
 namespace ancfnet {
 
 /// Fills ws.internal_force and ws.viscous_force (all coordinates) from the cable elements (in
-/// parallel) and the spring-damper links.
+/// parallel), the spring-damper links and the rigid bodies (gyroscopic terms, attachments).
 void CalcInternalForces(const Model& model, const VectorXd& q, const VectorXd& v, Workspace& ws);
 
 /// Fills ws.applied_force (point forces, point moments, distributed loads) and ws.external_force

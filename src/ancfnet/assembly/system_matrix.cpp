@@ -30,7 +30,9 @@ std::vector<Index> GroupCoordinates(const std::vector<Index>& blocks) {
 SystemMatrix::SystemMatrix(const Model& model, const DofMap& dofs)
     : dofs_(&dofs),
       num_elements_(static_cast<Index>(model.elements().size())),
-      num_point_masses_(static_cast<Index>(model.point_masses().size())) {
+      num_point_masses_(static_cast<Index>(model.point_masses().size())),
+      num_links_(static_cast<Index>(model.links().size())),
+      num_bodies_(static_cast<Index>(model.rigid_bodies().size())) {
   for (const CableElement& element : model.elements())
     group_blocks_.push_back({element.dofs[0], element.dofs[3], element.dofs[6], element.dofs[9]});
   for (const PointMass& point : model.point_masses()) group_blocks_.push_back({point.dof});
@@ -38,6 +40,16 @@ SystemMatrix::SystemMatrix(const Model& model, const DofMap& dofs)
     std::vector<Index> group;
     for (const PointLocation* point : {&link.first, &link.second})
       for (int b = 0; b < point->num_blocks; ++b) group.push_back(point->dof[b]);
+    group_blocks_.push_back(group);
+  }
+  for (const RigidBody& body : model.rigid_bodies())
+    group_blocks_.push_back({body.position_dof(), body.rotation_dof()});
+  for (const BodyAttachment& attachment : model.body_attachments()) {
+    std::vector<Index> group(attachment.point.dof.begin(),
+                             attachment.point.dof.begin() + attachment.point.num_blocks);
+    const RigidBody& body = model.rigid_bodies()[attachment.body];
+    group.push_back(body.position_dof());
+    group.push_back(body.rotation_dof());
     group_blocks_.push_back(group);
   }
   num_model_groups_ = group_blocks_.size();
@@ -127,6 +139,16 @@ void SystemMatrix::AddPointMassBlock(Index point, const Matrix3d& block, double 
 
 void SystemMatrix::AddLinkBlock(Index link, int i, int j, const Matrix3d& block, double scale) {
   AddGroupBlock(groups_[num_elements_ + num_point_masses_ + link], i, j, block, scale);
+}
+
+void SystemMatrix::AddBodyBlock(Index body, int i, int j, const Matrix3d& block, double scale) {
+  AddGroupBlock(groups_[num_elements_ + num_point_masses_ + num_links_ + body], i, j, block, scale);
+}
+
+void SystemMatrix::AddAttachmentBlock(Index attachment, int i, int j, const Matrix3d& block,
+                                      double scale) {
+  AddGroupBlock(groups_[num_elements_ + num_point_masses_ + num_links_ + num_bodies_ + attachment],
+                i, j, block, scale);
 }
 
 void SystemMatrix::AddBlock3(Index row, Index col, const Matrix3d& block, double scale) {

@@ -16,8 +16,9 @@ class Model;
 
 /// The couplings are groups of 3-coordinate blocks whose coordinates interact: each cable element
 /// (its blocks r_A, r'_A, r_B, r'_B), each point mass (one block), each spring-damper link
-/// (the blocks of its first point, then of its second), and the contact couplings added while
-/// the model moves (the blocks of one owner, an element or a point mass, then of the other).
+/// (the blocks of its first point, then of its second), each rigid body (x, ψ), each body
+/// attachment (the blocks of its point, then the body's x and ψ), and the contact couplings added
+/// while the model moves (the blocks of one owner, an element or a point mass, then of the other).
 class SystemMatrix {
  public:
   /// Pattern of the model's couplings between unknowns of `dofs`; values zero.
@@ -42,6 +43,12 @@ class SystemMatrix {
   int FindContactCoupling(Index a, Index b) const;
   /// Adds scale · block to the 3×3 block (row block i, column block j) of contact coupling c.
   void AddContactBlock(int coupling, int i, int j, const Matrix3d& block, double scale = 1.0);
+  /// Adds scale · block to the 3×3 block (i, j) of rigid body `body` (0: x, 1: ψ).
+  void AddBodyBlock(Index body, int i, int j, const Matrix3d& block, double scale = 1.0);
+  /// Adds scale · block to the 3×3 block (i, j) of body attachment `attachment`, its blocks
+  /// numbered the point's, then the body's x and ψ.
+  void AddAttachmentBlock(Index attachment, int i, int j, const Matrix3d& block,
+                          double scale = 1.0);
   /// Adds scale · block to the 3×3 block of rows starting at coordinate `row`, columns at `col`
   /// (both inside one coupling group). Searches the pattern: for rare terms only.
   void AddBlock3(Index row, Index col, const Matrix3d& block, double scale = 1.0);
@@ -60,9 +67,11 @@ class SystemMatrix {
   std::size_t num_model_groups_ = 0;              // groups before the contact couplings
   std::unordered_map<std::uint64_t, int> contact_coupling_;  // (a, b) packed → coupling
   SparseMatrixd matrix_;
-  std::vector<Group> groups_;  // elements, then point masses, then links
+  std::vector<Group> groups_;  // elements, point masses, links, bodies, then attachments
   Index num_elements_ = 0;
   Index num_point_masses_ = 0;
+  Index num_links_ = 0;
+  Index num_bodies_ = 0;
   // Index in matrix_.valuePtr() of each group entry, or −1 when its row or column is fixed.
   std::vector<int> slot_;
 };

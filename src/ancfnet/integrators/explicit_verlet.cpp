@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "ancfnet/model/rigid_body_kinematics.hpp"
+
 namespace ancfnet {
 
 ExplicitVerletIntegrator::ExplicitVerletIntegrator(const Model& model)
@@ -18,6 +20,7 @@ ExplicitVerletIntegrator::ExplicitVerletIntegrator(const Model& model)
 
 bool ExplicitVerletIntegrator::Initialize(State* state) {
   ws_.link_broken = state->link_broken;
+  ws_.body_rotation = state->body_rotation;
   contact_history_ = state->contact_history;
   SystemMatrix mass(model_, dofs_);
   AssembleMassMatrix(model_, ws_, &mass);
@@ -73,6 +76,9 @@ StepOutcome ExplicitVerletIntegrator::Step(double h, State* state) {
     contact_.UpdateHistory(state->q, state->v, &state->contact_history);
     contact_history_ = state->contact_history;
   }
+  // Bodies: ψ_{n+1} = h ω_{n+½} is the Lie-group increment; rebase R_ref on it.
+  RebaseBodyRotations(model_, state);
+  ws_.body_rotation = state->body_rotation;
   // Viscous forces for the energy account at the full-step velocity.
   CalcInternalForces(model_, state->q, state->v, ws_);
   damping_.AddForces(state->v, ws_);

@@ -96,9 +96,10 @@ StepOutcome ImplicitMidpointIntegrator::Step(double h, State* state) {
     state->a = previous.a;
     return outcome;
   }
-  core_.AcceptStep(state);
-  // Forces at the converged midpoint, for the energy account.
+  // Forces at the converged midpoint, for the energy account (before the bodies' rotations are
+  // rebased: ψ_{n+½} is relative to R_ref of t_n).
   core_.CalcForces(midpoint_.q, midpoint_.v);
+  core_.AcceptStep(state);
   return outcome;
 }
 

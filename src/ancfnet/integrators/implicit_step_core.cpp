@@ -1,6 +1,7 @@
 #include "ancfnet/integrators/implicit_step_core.hpp"
 
 #include "ancfnet/integrators/initial_acceleration.hpp"
+#include "ancfnet/model/rigid_body_kinematics.hpp"
 
 namespace ancfnet {
 
@@ -23,6 +24,7 @@ ImplicitStepCore::ImplicitStepCore(const Model& model, const DynamicSettings& se
 
 bool ImplicitStepCore::Initialize(State* state) {
   ws_.link_broken = state->link_broken;
+  ws_.body_rotation = state->body_rotation;
   newton_.InvalidateJacobian();
   if (!CalcInitialAcceleration(model_, dofs_, damping_, ws_, state)) return false;
   previous_ = *state;
@@ -35,6 +37,8 @@ void ImplicitStepCore::BeginStep(double h, const State& state) {
   previous_.v = state.v;
   previous_.a = state.a;
   previous_.contact_history = state.contact_history;
+  previous_.body_rotation = state.body_rotation;
+  ws_.body_rotation = state.body_rotation;
   if (h != last_h_) newton_.InvalidateJacobian();
   last_h_ = h;
   if (!self_contact_.empty()) {
@@ -76,10 +80,12 @@ void ImplicitStepCore::CalcForces(const VectorXd& q, const VectorXd& v) {
   CalcExternalForces(model_, q, 1.0, ws_);
 }
 
-void ImplicitStepCore::AcceptStep(State* state) const {
+void ImplicitStepCore::AcceptStep(State* state) {
   if (!contact_.empty()) contact_.UpdateHistory(state->q, state->v, &state->contact_history);
   if (!self_contact_.empty())
     self_contact_.UpdateHistory(state->q, state->v, &state->self_contact_history);
+  RebaseBodyRotations(model_, state);
+  ws_.body_rotation = state->body_rotation;
 }
 
 double ImplicitStepCore::IncrementNorm(const VectorXd& da, const VectorXd& q, double scale) const {

@@ -21,15 +21,17 @@ class ImplicitStepCore {
   /// Takes over the state's broken links, drops the stored Jacobian (also after a failure) and
   /// sets the consistent acceleration a = M⁻¹ (Q_ext − Q_int). False when M is singular.
   bool Initialize(State* state);
-  /// Saves the state at t_n (its contact history included); drops the factorisation when h
-  /// changed (the iteration matrix depends on h). Finds the self-contact pairs to watch during
-  /// the step and adds their couplings to the iteration matrix (a new pattern is analysed anew).
+  /// Saves the state at t_n (its contact history and body rotations included; ws() evaluates the
+  /// bodies with the latter until AcceptStep); drops the factorisation when h changed (the
+  /// iteration matrix depends on h). Finds the self-contact pairs to watch during the step and
+  /// adds their couplings to the iteration matrix (a new pattern is analysed anew).
   void BeginStep(double h, const State& state);
   /// Empty when a converged step to q may be accepted, else why not (self-contact search
   /// margin exceeded, threads passed through each other).
   std::string CheckStep(const VectorXd& q) const;
-  /// After a converged step: the contact history at the new state.
-  void AcceptStep(State* state) const;
+  /// After a converged step: the contact history at the new state; the bodies' reference
+  /// orientations rebased (R_ref ← R_ref exp(ψ̃), ψ ← 0), in the state and in ws().
+  void AcceptStep(State* state);
   /// Newton iterations on `problem` with the shared solver.
   template <class Problem>
   NewtonResult Solve(Problem& problem) {

@@ -18,6 +18,7 @@
 #include "ancfnet/io/contact_reader.hpp"
 #include "ancfnet/io/damping_reader.hpp"
 #include "ancfnet/io/net_reader.hpp"
+#include "ancfnet/io/rigid_body_reader.hpp"
 #include "ancfnet/io/scene_library.hpp"
 #include "ancfnet/io/scene_settings_reader.hpp"
 #include "ancfnet/io/yaml_reader.hpp"
@@ -280,14 +281,20 @@ std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
                                     {"centroid_velocity", ProbeQuantity::kCentroidVelocity},
                                     {"distance", ProbeQuantity::kDistance},
                                     {"max_tension", ProbeQuantity::kMaxTension},
-                                    {"link_force", ProbeQuantity::kLinkForce}});
+                                    {"link_force", ProbeQuantity::kLinkForce},
+                                    {"body_pose", ProbeQuantity::kBodyPose},
+                                    {"body_velocity", ProbeQuantity::kBodyVelocity}});
     const bool whole_system = probe.quantity == ProbeQuantity::kEnergy;
     const bool of_a_point =
         probe.quantity == ProbeQuantity::kPosition || probe.quantity == ProbeQuantity::kVelocity;
     if (auto at = map.Find("at"); at && whole_system)
       at->Fail("an energy probe reads the whole system and takes no point");
     const bool of_a_link = probe.quantity == ProbeQuantity::kLinkForce;
-    if (of_a_point)
+    const bool of_a_body = probe.quantity == ProbeQuantity::kBodyPose ||
+                           probe.quantity == ProbeQuantity::kBodyVelocity;
+    if (of_a_body)
+      map.CheckKeys({"name", "quantity", "body"});
+    else if (of_a_point)
       map.CheckKeys({"name", "quantity", "at"});
     else if (whole_system)
       map.CheckKeys({"name", "quantity"});
@@ -303,6 +310,8 @@ std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
       const YamlValue at = map.Get("at");
       const CablePointRef point = ReadPoint(at, point_masses);
       probe.point = at.Locate([&] { return model.LocatePoint(point.cable, point.s); });
+    } else if (of_a_body) {
+      probe.body = ReadNamedIndex(map.Get("body"), model.rigid_bodies(), "rigid body", "bodies");
     } else if (of_a_link) {
       probe.link =
           ReadNamedIndex(map.Get("link"), model.links(), "spring-damper", "spring-dampers");
@@ -320,8 +329,8 @@ Scene ReadScene(const YamlValue& root) {
     root.FailPlain("the scene is empty (expected a map with materials, sections and cables)");
   const YamlMap scene = root.AsMap();
   scene.CheckKeys({"gravity", "orbital_frame", "materials", "sections", "point_masses", "nets",
-                   "cables", "spring_dampers", "constraints", "loads", "damping", "contact",
-                   "probes", "analysis", "output"});
+                   "cables", "bodies", "attachments", "spring_dampers", "constraints", "loads",
+                   "damping", "contact", "probes", "analysis", "output"});
   ModelBuilder builder;
   if (auto v = scene.Find("gravity")) {
     const Vector3d gravity = v->AsVector3();
@@ -340,6 +349,16 @@ Scene ReadScene(const YamlValue& root) {
   if (auto v = scene.Find("cables"); v || point_masses.empty())
     for (const YamlValue& item : scene.Get("cables").AsList(/*non_empty=*/point_masses.empty()))
       ReadCable(item, library, &builder);
+  if (auto v = scene.Find("bodies"))
+    for (const YamlValue& item : v->AsList()) ReadRigidBody(item, &builder);
+  // The analysis settings first: a fixed attachment's penalty stiffness depends on the step.
+  Scene result;
+  if (auto v = scene.Find("analysis")) result.analysis = ReadAnalysisSettings(*v);
+  if (auto v = scene.Find("attachments"))
+    for (const YamlValue& item : v->AsList())
+      ReadBodyAttachment(
+          item, [&](const YamlValue& point) { return ReadPoint(point, point_masses); },
+          result.analysis.dynamics.time_step, &builder);
   if (auto v = scene.Find("spring_dampers"))
     for (const YamlValue& item : v->AsList()) ReadSpringDamper(item, point_masses, &builder);
   if (auto v = scene.Find("constraints"))
@@ -349,10 +368,8 @@ Scene ReadScene(const YamlValue& root) {
   if (auto v = scene.Find("damping")) ReadDamping(*v, &builder);
   if (auto v = scene.Find("contact")) ReadContact(*v, &builder);
 
-  Scene result;
   result.model = root.Locate([&] { return builder.Build(); });
   if (auto v = scene.Find("probes")) result.probes = ReadProbes(*v, result.model, point_masses);
-  if (auto v = scene.Find("analysis")) result.analysis = ReadAnalysisSettings(*v);
   if (auto v = scene.Find("output")) result.output = ReadOutputSettings(*v);
   result.source = root.source();
   return result;

@@ -69,6 +69,15 @@ Json ProbeJson(const Probe& probe, const Model& model, const State& state,
       return {{"link_force",
                {{"tension", Number(values[0])},
                 {"force", {Number(values[1]), Number(values[2]), Number(values[3])}}}}};
+    case ProbeQuantity::kBodyPose:
+      return {{"body_pose",
+               {{"position", {Number(values[0]), Number(values[1]), Number(values[2])}},
+                {"quaternion",
+                 {Number(values[3]), Number(values[4]), Number(values[5]), Number(values[6])}}}}};
+    case ProbeQuantity::kBodyVelocity:
+      return {{"body_velocity",
+               {{"linear", {Number(values[0]), Number(values[1]), Number(values[2])}},
+                {"angular_body", {Number(values[3]), Number(values[4]), Number(values[5])}}}}};
   }
   return Json::object();
 }

@@ -10,6 +10,7 @@
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/elements/ancf_cable.hpp"
 #include "ancfnet/elements/hermite_shape.hpp"
+#include "ancfnet/model/rigid_body_kinematics.hpp"
 
 namespace ancfnet {
 namespace {
@@ -87,6 +88,21 @@ void VtkSeriesWriter::CollectSamples(const Model& model, const State& state) {
       }
     }
   }
+  num_cable_samples_ = samples_.size();
+  // Each body: its origin, then the tips of its axes, drawn as long as its radius of gyration
+  // √(tr J / m); velocities ẋ + R (ω × s).
+  const auto& bodies = model.rigid_bodies();
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    const BodyPose pose = CalcBodyPose(model, state, static_cast<Index>(b));
+    const BodyVelocity velocity = CalcBodyVelocity(bodies[b], state.v);
+    const double length = std::sqrt(bodies[b].inertia.trace() / bodies[b].mass);
+    samples_.push_back({pose.p_WB, velocity.v_WB, 0.0, 0.0, 0.0});
+    for (int k = 0; k < 3; ++k) {
+      const Vector3d s_B = length * Vector3d::Unit(k);
+      samples_.push_back({pose.PointInWorld(s_B),
+                          velocity.v_WB + pose.R_WB * velocity.w_B.cross(s_B), 0.0, 0.0, 0.0});
+    }
+  }
 }
 
 void VtkSeriesWriter::CheckSamplesFinite(double time) const {
@@ -120,7 +136,7 @@ std::string VtkSeriesWriter::FormatPolyData(const Model& model) const {
   fmt::format_to(it,
                  "    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"0\" NumberOfLines=\"{}\" "
                  "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n",
-                 samples_.size(), model.cables().size());
+                 samples_.size(), model.cables().size() + 3 * model.rigid_bodies().size());
 
   out += "      <PointData Scalars=\"tension\" Vectors=\"velocity\">\n";
   AppendDataArray(&out, "velocity", 3, samples_,
@@ -138,14 +154,22 @@ std::string VtkSeriesWriter::FormatPolyData(const Model& model) const {
 
   // One polyline per cable over consecutive point indices.
   out += "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-  for (std::size_t i = 0; i < samples_.size(); ++i)
+  for (std::size_t i = 0; i < num_cable_samples_; ++i)
     fmt::format_to(it, "{}{}", i % 16 == 0 ? "          " : " ", i);
+  // Then three two-point lines per body, origin to each axis tip.
+  for (std::size_t base = num_cable_samples_; base < samples_.size(); base += 4)
+    fmt::format_to(it, "\n          {} {} {} {} {} {}", base, base + 1, base, base + 2, base,
+                   base + 3);
   out +=
       "\n        </DataArray>\n"
       "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n         ";
   Index offset = 0;
   for (const Cable& cable : model.cables()) {
     offset += cable.num_elements * points_per_element_ + 1;
+    fmt::format_to(it, " {}", offset);
+  }
+  for (std::size_t line = 0; line < 3 * model.rigid_bodies().size(); ++line) {
+    offset += 2;
     fmt::format_to(it, " {}", offset);
   }
   out +=

@@ -21,6 +21,9 @@ namespace ancfnet {
 ///  - `axial_strain` ε = (r'·r' − 1)/2 and `curvature` κ (1/m), from CalcCableStrain;
 ///  - `tension` N = EA ε (N), or 0 where a tension-only cable is in compression (elastic part
 ///    only: Kelvin–Voigt damping forces are not included).
+/// After the cables, each rigid body adds its frame: 4 points (its origin x_WB and the tips of its
+/// body axes, drawn as long as its radius of gyration √(tr J_B / m)) and 3 two-point lines, with
+/// their velocities and zero strain, curvature and tension.
 class VtkSeriesWriter {
  public:
   /// Creates `directory` when missing. `base_name` names the files; `points_per_element` ≥ 1.
@@ -63,7 +66,8 @@ class VtkSeriesWriter {
   std::filesystem::path directory_;
   std::string base_name_;
   int points_per_element_;
-  std::vector<Sample> samples_;  // all cables, cable after cable; reused between frames
+  std::vector<Sample> samples_;  // all cables, cable after cable, then the bodies' frames
+  std::size_t num_cable_samples_ = 0;
   std::vector<Frame> frames_;
 };
 

@@ -13,7 +13,20 @@ double Model::total_mass() const {
   double mass = 0.0;
   for (const Cable& cable : cables_) mass += cable.properties.mass_per_length * cable.length;
   for (const PointMass& point : point_masses_) mass += point.mass;
+  for (const RigidBody& body : rigid_bodies_) mass += body.mass;
   return mass;
+}
+
+bool Model::has_free_bodies() const {
+  for (const RigidBody& body : rigid_bodies_)
+    if (body.motion == BodyMotion::kFree) return true;
+  return false;
+}
+
+Index Model::FindRigidBody(const std::string& name) const {
+  for (std::size_t i = 0; i < rigid_bodies_.size(); ++i)
+    if (rigid_bodies_[i].name == name) return static_cast<Index>(i);
+  return -1;
 }
 
 Index Model::FindPointMass(const std::string& name) const {

@@ -15,6 +15,7 @@
 #include "ancfnet/model/damping_spec.hpp"
 #include "ancfnet/model/material.hpp"
 #include "ancfnet/model/prescribed_motion.hpp"
+#include "ancfnet/model/rigid_body.hpp"
 
 namespace ancfnet {
 
@@ -84,6 +85,18 @@ struct SpringDamperLink {
   double breaking_force = std::numeric_limits<double>::infinity();
 };
 
+/// A cable point or point mass tied to a body point s_B by an isotropic linear spring-damper
+/// (forces/body_attachment.hpp): f = −k (p − (x + R s_B)) − c (ṗ − (ẋ + R (ω × s_B))) on the
+/// point, −f on the body at x + R s_B.
+struct BodyAttachment {
+  std::string name;
+  PointLocation point;
+  Index body = 0;
+  Vector3d body_point = Vector3d::Zero();  ///< s_B (m, body frame)
+  double stiffness = 0.0;                  ///< k (N/m), > 0
+  double damping = 0.0;                    ///< c (N s/m), ≥ 0
+};
+
 /// A net as built by AddNet (model/net_builder.hpp): which point masses are its knots and which
 /// cables its threads, for net metrics and outputs.
 struct Net {
@@ -116,8 +129,8 @@ struct DistributedLoad {
 };
 
 /// The system description. Coordinates are numbered in the order things are added: six per
-/// cable node (r, r'; three when the position is a knot's), three per point mass. A coordinate is
-/// either free (an unknown) or fixed at its initial value.
+/// cable node (r, r'; three when the position is a knot's), three per point mass, six per rigid
+/// body (x, ψ). A coordinate is either free (an unknown) or fixed at its initial value.
 class Model {
  public:
   Index num_dofs() const { return static_cast<Index>(initial_positions_.size()); }
@@ -127,6 +140,11 @@ class Model {
   const std::vector<PointMass>& point_masses() const { return point_masses_; }
   const std::vector<SpringDamperLink>& links() const { return links_; }
   const std::vector<Net>& nets() const { return nets_; }
+  /// Rigid bodies (model/rigid_body.hpp) and their attachments.
+  const std::vector<RigidBody>& rigid_bodies() const { return rigid_bodies_; }
+  const std::vector<BodyAttachment>& body_attachments() const { return body_attachments_; }
+  /// True when a rigid body moves freely (static and modal analyses refuse such models).
+  bool has_free_bodies() const;
   const std::vector<CableElement>& elements() const { return elements_; }
   const std::vector<PointForce>& point_forces() const { return point_forces_; }
   const std::vector<PointMoment>& point_moments() const { return point_moments_; }
@@ -145,7 +163,7 @@ class Model {
   const std::vector<bool>& fixed() const { return fixed_; }
   const VectorXd& initial_positions() const { return initial_positions_; }
   const VectorXd& initial_velocities() const { return initial_velocities_; }
-  /// Total mass of the cables and point masses (kg).
+  /// Total mass of the cables, point masses and rigid bodies (kg).
   double total_mass() const;
 
   /// First global coordinate of a node's position r and of its slope r'.
@@ -155,6 +173,8 @@ class Model {
   Index FindCable(const std::string& name) const;
   /// Index of the point mass with this name, or −1.
   Index FindPointMass(const std::string& name) const;
+  /// Index of the rigid body with this name, or −1.
+  Index FindRigidBody(const std::string& name) const;
   /// Material point at fraction s ∈ [0, 1] of a cable's reference length.
   MaterialPoint LocateCablePoint(Index cable, double s) const;
   /// Node at fraction s of a cable; throws InputError when s is not at a node.
@@ -179,6 +199,8 @@ class Model {
   std::vector<PointMass> point_masses_;
   std::vector<SpringDamperLink> links_;
   std::vector<Net> nets_;
+  std::vector<RigidBody> rigid_bodies_;
+  std::vector<BodyAttachment> body_attachments_;
   std::vector<PointForce> point_forces_;
   std::vector<PointMoment> point_moments_;
   std::vector<DistributedLoad> distributed_loads_;

@@ -7,6 +7,8 @@
 #include <utility>
 
 #include "ancfnet/common/error.hpp"
+#include "ancfnet/forces/body_attachment.hpp"
+#include "ancfnet/model/rigid_body_kinematics.hpp"
 
 namespace ancfnet {
 namespace {
@@ -52,11 +54,13 @@ void ModelBuilder::SetGravity(const Vector3d& gravity) {
 }
 
 void ModelBuilder::CheckNameIsFree(const std::string& name) const {
-  if (name.empty()) throw InputError("cables and point masses need a non-empty name");
+  if (name.empty()) throw InputError("cables, point masses and bodies need a non-empty name");
   for (const Cable& cable : model_.cables_)
     if (cable.name == name) throw InputError(fmt::format("two cables are named '{}'", name));
   if (model_.FindPointMass(name) >= 0)
     throw InputError(fmt::format("a point mass is already named '{}'", name));
+  if (model_.FindRigidBody(name) >= 0)
+    throw InputError(fmt::format("a rigid body is already named '{}'", name));
 }
 
 void ModelBuilder::SetRayleighDamping(const RayleighDamping& damping) {
@@ -274,6 +278,98 @@ void ModelBuilder::MovePointMass(const std::string& name, const Vector3d& veloci
   model_.prescribed_.push_back(block);
 }
 
+Index ModelBuilder::AddRigidBody(const RigidBodySpec& spec) {
+  CheckNameIsFree(spec.name);
+  RequirePositive(spec.mass, "body mass");
+  ValidateInertia(spec.inertia, spec.name);
+  ValidateRotation(spec.orientation, fmt::format("orientation of body '{}'", spec.name));
+  RequireFinite(spec.position, "body position");
+  RequireFinite(spec.velocity, "body velocity");
+  RequireFinite(spec.angular_velocity, "body angular velocity");
+  // Exactly orthonormal, so that round-off in the input does not act as a strain of R.
+  const Matrix3d orientation = Eigen::Quaterniond(spec.orientation).normalized().toRotationMatrix();
+  VectorXd initial(6);
+  initial << spec.position, Vector3d::Zero();
+  const Index dof = AddCoordinates(initial);
+  const Vector3d w_B = spec.angular_velocity_in_world
+                           ? Vector3d(orientation.transpose() * spec.angular_velocity)
+                           : spec.angular_velocity;
+  model_.initial_velocities_.segment<3>(dof) = spec.velocity;
+  model_.initial_velocities_.segment<3>(dof + 3) = w_B;
+  RigidBody body{.name = spec.name,
+                 .mass = spec.mass,
+                 .inertia = 0.5 * (spec.inertia + spec.inertia.transpose()),
+                 .initial_orientation = orientation,
+                 .motion = spec.motion,
+                 .dof = dof};
+  if (spec.motion != BodyMotion::kFree)
+    for (int k = 0; k < 6; ++k) model_.fixed_[dof + k] = true;
+  if (spec.motion == BodyMotion::kPrescribed) {
+    // x = x₀ + v t and ψ = t ω_B (R_ref stays R₀): exp(t ω̃_B) is the exact constant-rate path.
+    for (const auto& [first, rate] : {std::pair{dof, spec.velocity}, {dof + 3, w_B}}) {
+      PrescribedBlock block;
+      block.kind = PrescribedBlock::Kind::kTranslation;
+      block.dof = first;
+      block.initial = model_.initial_positions_.segment<3>(first);
+      block.velocity = rate;
+      model_.prescribed_.push_back(block);
+    }
+  }
+  model_.rigid_bodies_.push_back(body);
+  return static_cast<Index>(model_.rigid_bodies_.size()) - 1;
+}
+
+double ModelBuilder::PointMassOf(const CablePointRef& point) const {
+  const Index mass = model_.FindPointMass(point.cable);
+  if (mass >= 0) return model_.point_masses_[mass].mass;
+  const MaterialPoint at = model_.LocateCablePoint(model_.FindCable(point.cable), point.s);
+  const CableElementParameters& p = model_.elements_[at.element].parameters;
+  return 0.5 * p.mass_per_length * p.length;
+}
+
+void ModelBuilder::AddBodyAttachment(const BodyAttachmentSpec& spec) {
+  const Index b = model_.FindRigidBody(spec.body);
+  if (b < 0) throw InputError(fmt::format("no rigid body named '{}'", spec.body));
+  const RigidBody& body = model_.rigid_bodies_[b];
+  BodyAttachment attachment{
+      .name = spec.name, .point = model_.LocatePoint(spec.point.cable, spec.point.s), .body = b};
+  if (spec.body_point) {
+    RequireFinite(*spec.body_point, "attachment body point");
+    attachment.body_point = *spec.body_point;
+  } else {
+    const Vector3d p0 = Model::Locate(attachment.point, model_.initial_positions_);
+    const Vector3d x0 = model_.initial_positions_.segment<3>(body.position_dof());
+    attachment.body_point = body.initial_orientation.transpose() * (p0 - x0);
+  }
+  // The free body's mass takes part in the pair's reduced mass; a fixed one is infinitely heavy.
+  const double point_mass = PointMassOf(spec.point);
+  const double body_mass =
+      body.motion == BodyMotion::kFree ? body.mass : std::numeric_limits<double>::infinity();
+  const double reduced =
+      std::isinf(body_mass) ? point_mass : point_mass * body_mass / (point_mass + body_mass);
+  if (spec.stiffness) {
+    RequirePositive(*spec.stiffness, "attachment stiffness");
+    attachment.stiffness = *spec.stiffness;
+  } else {
+    if (!(spec.time_step > 0.0))
+      throw InputError(fmt::format(
+          "attachment '{}': a fixed attachment (no stiffness given) takes its penalty stiffness "
+          "from the time step, which is missing",
+          spec.name));
+    if (!(reduced > 0.0))
+      throw InputError(fmt::format(
+          "attachment '{}': the point has no mass; give the stiffness explicitly", spec.name));
+    attachment.stiffness = CalcFixedAttachmentStiffness(reduced, spec.time_step);
+  }
+  if (spec.damping) {
+    RequireNonNegative(*spec.damping, "attachment damping");
+    attachment.damping = *spec.damping;
+  } else if (!spec.stiffness) {
+    attachment.damping = 2.0 * std::sqrt(attachment.stiffness * reduced);
+  }
+  model_.body_attachments_.push_back(attachment);
+}
+
 void ModelBuilder::AddRotatingClamp(const CablePointRef& at, const Vector3d& axis,
                                     const Vector3d& center, const AngleProfile& angle) {
   RequireFinite(axis, "hub axis");
@@ -380,8 +476,14 @@ void ModelBuilder::AddNetDescription(const Net& net) {
 }
 
 Model ModelBuilder::Build() const {
-  if (model_.cables_.empty() && model_.point_masses_.empty())
-    throw InputError("the model has no cable and no point mass");
+  if (model_.cables_.empty() && model_.point_masses_.empty() && model_.rigid_bodies_.empty())
+    throw InputError("the model has no cable, no point mass and no rigid body");
+  if (model_.orbital_frame_ && !model_.rigid_bodies_.empty())
+    throw InputError("rigid bodies are not available in an orbital (Hill) frame yet");
+  if (model_.damping_.modal.num_modes > 0 && model_.has_free_bodies())
+    throw InputError(
+        "modal damping needs the modes of the model, which free rigid bodies do not have; use "
+        "Rayleigh damping or make the bodies fixed");
   Model model = model_;
   // A fixed coordinate does not move, unless it belongs to a moving point mass.
   for (Index i = 0; i < model.num_dofs(); ++i)

@@ -38,6 +38,23 @@ struct CablePointRef {
   double s = 0.0;
 };
 
+/// A cable point or point mass tied to a point of a rigid body (forces/body_attachment.hpp).
+struct BodyAttachmentSpec {
+  std::string name;
+  std::string body;
+  /// A point mass (by name, s ignored) or a cable point.
+  CablePointRef point;
+  /// s_B (m, body frame); default: where the point is at t = 0, R_WBᵀ (p₀ − x_WB).
+  std::optional<Vector3d> body_point = std::nullopt;
+  /// k (N/m, > 0); default: the stiff penalty of a fixed attachment,
+  /// CalcFixedAttachmentStiffness from the masses and `time_step`.
+  std::optional<double> stiffness = std::nullopt;
+  /// c (N s/m, ≥ 0); default: 2 √(k m_eff) (critical for the pair) with the default stiffness,
+  /// else 0.
+  std::optional<double> damping = std::nullopt;
+  double time_step = 0.0;  ///< h (s) for the default stiffness; > 0 when `stiffness` is absent
+};
+
 /// Which coordinates of a cable node to fix: x, y, z of r, then of r'.
 using CoordinateMask = std::array<bool, kCableNodeDofs>;
 
@@ -80,6 +97,15 @@ class ModelBuilder {
                        const CablePointRef& second, const ConnectionLaw& law,
                        std::optional<double> natural_length = std::nullopt,
                        double breaking_force = std::numeric_limits<double>::infinity());
+  /// Adds a rigid body (model/rigid_body.hpp) with six coordinates (x_WB, ψ); returns its index.
+  /// Its name is unique among cables, point masses and bodies; mass > 0; inertia SPD with
+  /// principal moments satisfying the triangle inequality; orientation a rotation matrix. A
+  /// prescribed body moves as x(t) = x₀ + v t, R(t) = R₀ exp(t ω̃_B) (its coordinates are
+  /// eliminated and ψ = t ω_B). Gravity acts on free bodies. Bodies exclude an orbital frame (not
+  /// yet), free bodies modal damping (Build throws); Rayleigh damping acts on the cables only.
+  Index AddRigidBody(const RigidBodySpec& spec);
+  /// Ties a point to a body point (BodyAttachmentSpec).
+  void AddBodyAttachment(const BodyAttachmentSpec& spec);
   /// Fixes position and slope of the node at `at` (which must be a node).
   void AddClamp(const CablePointRef& at);
   /// Fixes the position of the node at `at`; the slope stays free.
@@ -109,6 +135,8 @@ class ModelBuilder {
  private:
   Index LocateNode(const CablePointRef& at) const;
   void CheckNameIsFree(const std::string& name) const;
+  // The mass that moves with a located point: a point mass's, or half its cable element's.
+  double PointMassOf(const CablePointRef& point) const;
   // Appends n coordinates with these initial values, free and at rest; returns the first.
   Index AddCoordinates(const VectorXd& initial_values);
   // Position coordinates of a cable end: the named knot's, or new ones at `position`.

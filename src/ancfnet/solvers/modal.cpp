@@ -79,6 +79,10 @@ struct LinearSystem {
 
 LinearSystem Linearise(const Model& model, const DofMap& dofs, const VectorXd& q,
                        const DampingModel* damping) {
+  if (model.has_free_bodies())
+    throw InputError(
+        "modal analysis: the model has a free rigid body (its rotation coordinates are not "
+        "linearised); make the bodies fixed (motion: fixed)");
   Workspace ws(model);
   SystemMatrix matrix(model, dofs);
   const VectorXd rest = VectorXd::Zero(model.num_dofs());

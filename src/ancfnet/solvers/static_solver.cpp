@@ -4,6 +4,7 @@
 
 #include "ancfnet/analysis/energy_tracker.hpp"
 #include "ancfnet/assembly/forces.hpp"
+#include "ancfnet/common/error.hpp"
 #include "ancfnet/solvers/newton.hpp"
 
 namespace ancfnet {
@@ -61,6 +62,10 @@ class LoadIncrement {
 
 SolveResult SolveStatic(const Model& model, const StaticSettings& settings,
                         const OutputCallback& output, State* state) {
+  if (model.has_free_bodies())
+    throw InputError(
+        "static analysis: the model has a free rigid body, which has no static equilibrium to "
+        "find; make it fixed (motion: fixed) or run a dynamic analysis");
   Workspace ws(model);
   state->v.setZero();
   state->a.setZero();

@@ -34,6 +34,10 @@ struct State {
   std::vector<double> contact_history;
   /// Sorted by (first, second).
   std::vector<SelfContactPairHistory> self_contact_history;
+  /// Per rigid body: its reference orientation R_ref, R_WB = R_ref exp(ψ̃) with ψ the body's
+  /// rotation coordinates (model/rigid_body.hpp). R_WB(0) at t = 0; the integrators rebase it
+  /// after every accepted step of a free body (RebaseBodyRotations).
+  std::vector<Matrix3d> body_rotation;
 };
 
 /// The model's initial state at t = 0 (accelerations zero until an integrator computes them).

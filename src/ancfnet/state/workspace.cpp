@@ -26,6 +26,11 @@ Workspace::Workspace(const Model& model)
   }
   for (const PointMass& point : model.point_masses())
     gravity_force.segment<3>(point.dof) += point.mass * model.gravity();
+  for (const RigidBody& body : model.rigid_bodies()) {
+    body_rotation.push_back(body.initial_orientation);
+    if (body.motion == BodyMotion::kFree)
+      gravity_force.segment<3>(body.position_dof()) += body.mass * model.gravity();
+  }
   for (const DistributedLoad& load : model.distributed_loads()) {
     const Cable& cable = model.cables()[load.cable];
     for (Index e = cable.first_element; e < cable.first_element + cable.num_elements; ++e) {

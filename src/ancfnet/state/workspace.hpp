@@ -15,7 +15,7 @@ struct Workspace {
 
   // Constant, filled by the constructor.
   std::vector<Matrix12d> element_mass;  ///< consistent mass matrix of each element
-  VectorXd gravity_force;               ///< ∫ ρA Sᵀ g dx and m g of point masses (N)
+  VectorXd gravity_force;  ///< ∫ ρA Sᵀ g dx, m g of point masses and free bodies (N)
   VectorXd distributed_force;           ///< ∫ Sᵀ w dx of the distributed loads (N)
 
   // Per element, filled by CalcInternalForces / AssembleIterationMatrix.
@@ -27,6 +27,9 @@ struct Workspace {
   // Copied from State::link_broken by the integrators before they evaluate forces; the force,
   // Jacobian and energy of a broken link are skipped.
   std::vector<char> link_broken;
+  // Copied from State::body_rotation by the integrators (after every rebase): the reference
+  // orientations R_ref the body forces are evaluated with.
+  std::vector<Matrix3d> body_rotation;
   /// Elastic energy stored in the contacts (J): set by the contact forces (TargetContact).
   double contact_energy = 0.0;
 

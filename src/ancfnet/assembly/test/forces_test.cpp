@@ -57,12 +57,60 @@ Model MakeLinkedModel(bool orbital_frame = false) {
   return builder.Build();
 }
 
-// A perturbed configuration and velocity so that every term is active.
+// Free and fixed rigid bodies, turned, with attachments to a cable point (through the Hermite
+// weights), to a point mass, and from a point mass to the fixed body, and a gyroscopic spin.
+Model MakeBodyModel() {
+  const CableProperties properties =
+      MakeCableProperties({.youngs_modulus = 1.0e8, .density = 1200.0}, MakeCircleSection(0.02));
+  ModelBuilder builder;
+  builder.SetGravity(Vector3d(0.0, 0.0, -9.81));
+  builder.AddCable({.name = "a",
+                    .start = Vector3d::Zero(),
+                    .end = Vector3d(1.0, 0.0, 0.0),
+                    .num_elements = 2,
+                    .properties = properties});
+  builder.AddPointMass("bullet", 0.2, Vector3d(1.5, 0.5, 0.2));
+  builder.AddRigidBody(
+      {.name = "target",
+       .mass = 4.0,
+       .inertia = Vector3d(0.5, 0.7, 0.9).asDiagonal(),
+       .position = Vector3d(1.2, 0.3, -0.1),
+       .orientation = Matrix3d(Eigen::AngleAxisd(0.6, Vector3d(1, 2, 3).normalized())),
+       .angular_velocity = Vector3d(0.4, -1.1, 2.0)});
+  builder.AddRigidBody({.name = "hub",
+                        .mass = 1.0,
+                        .inertia = Matrix3d::Identity(),
+                        .position = Vector3d(-0.5, 0.0, 0.0),
+                        .motion = BodyMotion::kFixed});
+  builder.AddBodyAttachment({.name = "cable_to_target",
+                             .body = "target",
+                             .point = {"a", 0.7},
+                             .body_point = Vector3d(0.1, -0.3, 0.2),
+                             .stiffness = 300.0,
+                             .damping = 2.0});
+  builder.AddBodyAttachment({.name = "bullet_to_target",
+                             .body = "target",
+                             .point = {"bullet"},
+                             .stiffness = 120.0,
+                             .damping = 0.7});
+  builder.AddBodyAttachment({.name = "cable_to_hub",
+                             .body = "hub",
+                             .point = {"a", 0.0},
+                             .stiffness = 500.0,
+                             .damping = 1.0});
+  return builder.Build();
+}
+
+// A perturbed configuration and velocity so that every term is active. Rotation increments ψ of
+// bodies stay 0, where the iteration matrix's tangent operator T(ψ) = I is exact.
 State MakePerturbedState(const Model& model) {
   State state = MakeInitialState(model);
+  std::vector<bool> rotation(model.num_dofs(), false);
+  for (const RigidBody& body : model.rigid_bodies())
+    for (int k = 0; k < 3; ++k) rotation[body.rotation_dof() + k] = true;
   for (Index i = 0; i < model.num_dofs(); ++i) {
     if (model.fixed()[i]) continue;
-    state.q[i] += 0.05 * std::sin(1.3 * i + 0.2);
+    if (!rotation[i]) state.q[i] += 0.05 * std::sin(1.3 * i + 0.2);
     state.v[i] = 0.4 * std::cos(0.7 * i);
   }
   return state;
@@ -116,16 +164,37 @@ TEST(Assembly, IterationMatrixInAnOrbitalFrameMatchesFiniteDifferences) {
   ExpectIterationMatrixMatchesFiniteDifferences(MakeLinkedModel(/*orbital_frame=*/true));
 }
 
+TEST(Assembly, IterationMatrixWithRigidBodiesMatchesFiniteDifferences) {
+  ExpectIterationMatrixMatchesFiniteDifferences(MakeBodyModel());
+}
+
+TEST(Assembly, BodyMassBlocksAreMassAndInertia) {
+  const Model model = MakeBodyModel();
+  const DofMap all = DofMap::AllCoordinates(model);
+  SystemMatrix mass(model, all);
+  const Workspace ws(model);
+  AssembleMassMatrix(model, ws, &mass);
+  const MatrixXd m(mass.matrix());
+  const RigidBody& body = model.rigid_bodies()[0];
+  EXPECT_LT(
+      (m.block<3, 3>(body.position_dof(), body.position_dof()) - 4.0 * Matrix3d::Identity()).norm(),
+      1e-15);
+  EXPECT_LT((m.block<3, 3>(body.rotation_dof(), body.rotation_dof()) - body.inertia).norm(), 1e-15);
+  const double coupling = m.block<3, 3>(body.position_dof(), body.rotation_dof()).norm();
+  EXPECT_EQ(coupling, 0.0);
+}
+
 TEST(Assembly, InternalForcesOfIterationMatrixMatchForceOnlyPath) {
-  for (const Model& model : {MakeLoadedModel(), MakeLinkedModel(), MakeLinkedModel(true)}) {
-  const State state = MakePerturbedState(model);
-  Workspace ws(model);
-  const DofMap dofs = DofMap::FreeCoordinates(model);
-  SystemMatrix matrix(model, dofs);
-  AssembleIterationMatrix(model, state.q, state.v, {.stiffness = 1.0}, 1.0, ws, &matrix);
-  const VectorXd from_matrix = ws.internal_force;
-  CalcInternalForces(model, state.q, state.v, ws);
-  EXPECT_LT((from_matrix - ws.internal_force).norm(), 1e-12 * ws.internal_force.norm());
+  for (const Model& model :
+       {MakeLoadedModel(), MakeLinkedModel(), MakeLinkedModel(true), MakeBodyModel()}) {
+    const State state = MakePerturbedState(model);
+    Workspace ws(model);
+    const DofMap dofs = DofMap::FreeCoordinates(model);
+    SystemMatrix matrix(model, dofs);
+    AssembleIterationMatrix(model, state.q, state.v, {.stiffness = 1.0}, 1.0, ws, &matrix);
+    const VectorXd from_matrix = ws.internal_force;
+    CalcInternalForces(model, state.q, state.v, ws);
+    EXPECT_LT((from_matrix - ws.internal_force).norm(), 1e-12 * ws.internal_force.norm());
   }
 }
 

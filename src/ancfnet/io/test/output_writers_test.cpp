@@ -215,6 +215,39 @@ TEST(VtkSeriesWriter, WritesPolylinesThroughTheNodesAndTheCollection) {
   EXPECT_FALSE(std::filesystem::exists(dir / "cables.pvd.tmp"));
 }
 
+TEST(VtkSeriesWriter, DrawsABodyFrameAfterTheCables) {
+  CableProperties properties =
+      MakeCableProperties({.youngs_modulus = 2.0e11, .density = 7850.0}, MakeCircleSection(4e-3));
+  ModelBuilder builder;
+  builder.AddCable({"a", Vector3d::Zero(), Vector3d(1.5, 0, 0), 3, properties});
+  // J = diag(1, 1, 1) for 3 kg: axes √(3/3) = 1 m long; turned 90° about z.
+  builder.AddRigidBody(
+      {.name = "target",
+       .mass = 3.0,
+       .inertia = Matrix3d::Identity(),
+       .position = Vector3d(0, 0, 2),
+       .orientation = Matrix3d(Eigen::AngleAxisd(1.5707963267948966, Vector3d::UnitZ())),
+       .velocity = Vector3d(1, 0, 0),
+       .angular_velocity = Vector3d(0, 0, 2)});
+  const Model model = builder.Build();
+  const std::filesystem::path dir = MakeTestDirectory() / "vtk_body";
+  VtkSeriesWriter writer(dir, "cables", 2);
+  writer.WriteFrame(model, MakeInitialState(model));
+  const std::string xml = ReadFile(writer.FramePath(0));
+  EXPECT_NE(xml.find("NumberOfPoints=\"11\""), std::string::npos);
+  EXPECT_NE(xml.find("NumberOfLines=\"4\""), std::string::npos);
+  EXPECT_EQ(ReadDataArray(xml, "offsets"), (std::vector<double>{7, 9, 11, 13}));
+  const std::vector<double> connectivity = ReadDataArray(xml, "connectivity");
+  EXPECT_EQ(std::vector<double>(connectivity.begin() + 7, connectivity.end()),
+            (std::vector<double>{7, 8, 7, 9, 7, 10}));
+  const std::vector<double> points = ReadDataArray(xml, "position");
+  EXPECT_TRUE(PointAt(points, 7).isApprox(Vector3d(0, 0, 2)));
+  EXPECT_TRUE(PointAt(points, 8).isApprox(Vector3d(0, 1, 2)));  // body x along world y
+  // Tip of body x: ẋ + R (ω × e_x) = (1, 0, 0) + R (0, 2, 0) = (1 − 2, 0, 0).
+  const std::vector<double> velocity = ReadDataArray(xml, "velocity");
+  EXPECT_TRUE(PointAt(velocity, 8).isApprox(Vector3d(-1, 0, 0)));
+}
+
 // Stretches (λ > 1) or compresses (λ < 1) both straight cables uniformly.
 std::string WriteUniformlyStretchedFrame(bool tension_only, double stretch,
                                          const std::filesystem::path& dir) {
