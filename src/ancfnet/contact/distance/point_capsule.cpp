@@ -1,5 +1,6 @@
 #include "ancfnet/contact/distance/point_capsule.hpp"
 
+#include "ancfnet/contact/distance/direction.hpp"
 #include "ancfnet/contact/distance/point_segment.hpp"
 
 namespace ancfnet {
@@ -12,9 +13,9 @@ PointCapsuleDistance CalcPointCapsuleDistance(const Vector3d& p, const Vector3d&
   const PointSegmentDistance s = CalcPointSegmentDistance(p, a, b);
   PointCapsuleDistance out;
   out.distance = s.distance - radius;
-  out.normal = s.direction;
-  out.closest_point = s.closest_point + radius * s.direction;
   out.on_axis = !(s.distance > 1e-12 * radius);
+  out.normal = out.on_axis ? AnyUnitPerpendicular(axis) : s.direction;
+  out.closest_point = s.closest_point + radius * out.normal;
   out.hessian = out.on_axis ? Matrix3d::Zero() : CalcPointSegmentHessian(s, a, b);
   return out;
 }

@@ -140,11 +140,17 @@ MeshDistance MeshBvh::Finish(const Vector3d& p, Index t, const PointTriangleDist
   Vector3d pseudo_normal;
   Matrix3d curvature = Matrix3d::Zero();  // ∂u/∂p
   switch (d.region) {
-    case TriangleRegion::kFace:
+    case TriangleRegion::kFace: {
+      // The height over the face's plane: n exactly the face normal, also where d is rounding.
       out.feature = MeshFeature::kFace;
       out.feature_index = t;
-      pseudo_normal = normals_.face.col(t);
-      break;
+      const Vector3d n_f = normals_.face.col(t);
+      const double height = (p - d.closest_point).dot(n_f);
+      const double s = closed() || height >= 0.0 ? 1.0 : -1.0;
+      out.distance = s * height;
+      out.normal = s * n_f;
+      return out;
+    }
     case TriangleRegion::kEdgeAB:
     case TriangleRegion::kEdgeBC:
     case TriangleRegion::kEdgeCA: {

@@ -36,6 +36,9 @@ struct MeshDistance {
 ///   closed mesh: s = sign((p − x)·N), N the pseudo-normal of the feature holding x
 ///     (CalcMeshNormals), φ = s d, n = s u;
 ///   open mesh (a sheet of thickness 0, each side repelling): φ = d, n = u;
+///   on a face, with its normal n_f and the height h = (p − x)·n_f, these are evaluated as
+///   φ = h, n = n_f (closed) and φ = |h|, n = sign(h) n_f (open; + for h = 0), so that n is the
+///   face normal to the last digit, even where d is rounding;
 ///   ∂n/∂p = 0 on a face, s (I − e eᵀ − u uᵀ)/d on an edge of direction e, s (I − u uᵀ)/d at a
 ///   vertex (s = 1 for an open mesh).
 /// At d = 0: n = s N normalised (the face normal for an open mesh), Hessian 0.

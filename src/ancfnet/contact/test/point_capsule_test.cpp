@@ -26,8 +26,8 @@ TEST(PointCapsuleDistance, MatchesTheDistanceToTheSweptSegment) {
     const Vector3d c = RandomVector(&rng, -1, 1);
     const Vector3d a = RandomRotation(&rng).col(0);
     const double half_length = k % 10 == 0 ? 0.0 : 0.8 * (k % 7) / 7.0;
-    const double radius = 0.1 + 0.05 * (k % 9);
-    const Vector3d p = c + RandomVector(&rng, -1.5, 1.5);
+    const double radius = 0.2 + 0.05 * (k % 9);
+    const Vector3d p = c + RandomVector(&rng, -1.0, 1.0);
     const PointCapsuleDistance d = CalcPointCapsuleDistance(p, c, a, half_length, radius);
     const double expected =
         TernaryMin([&](double t) { return (p - (c + t * a)).norm(); }, -half_length, half_length) -

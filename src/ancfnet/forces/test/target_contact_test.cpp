@@ -91,9 +91,6 @@ TEST(TargetContact, JacobiansMatchFiniteDifferencesOnAPlane) {
   ExpectJacobiansMatchFiniteDifferences(MakePressedCable(plane, true));
 }
 
-}  // namespace
-}  // namespace ancfnet
-
 TEST(TargetContact, JacobiansMatchFiniteDifferencesOnACapsuleAndAMesh) {
   ContactTarget capsule;
   capsule.kind = ContactTarget::Kind::kCapsule;
@@ -106,3 +103,6 @@ TEST(TargetContact, JacobiansMatchFiniteDifferencesOnACapsuleAndAMesh) {
   mesh.mesh = std::make_shared<const MeshBvh>(MakeIcosphere(0.3, 4));
   ExpectJacobiansMatchFiniteDifferences(MakePressedCable(mesh, false));
 }
+
+}  // namespace
+}  // namespace ancfnet

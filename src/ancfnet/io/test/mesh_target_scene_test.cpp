@@ -60,10 +60,10 @@ std::string SceneError(const std::string& targets) {
 
 TEST(MeshTargetScene, BadInputNamesTheFileLineAndKey) {
   EXPECT_EQ(SceneError("    - {type: mesh, file: cube.stl}\n"),
-            "scene.yaml:6:28: " + (DataDir() / "cube.stl").string() +
+            "scene.yaml:6:26: " + (DataDir() / "cube.stl").string() +
                 ": cannot open mesh file (no such file) (key 'file')");
   EXPECT_EQ(SceneError("    - {type: mesh, file: unit_cube.stl, scale: 0}\n"),
-            "scene.yaml:6:50: expected a number > 0, got '0' (key 'scale')");
+            "scene.yaml:6:48: expected a number > 0, got '0' (key 'scale')");
   EXPECT_EQ(SceneError("    - {type: mesh, file: unit_cube.stl, rotation: {axis: [0, 0, 0], "
                        "angle: 3}}\n")
                 .rfind("scene.yaml:6:", 0),
