@@ -41,7 +41,8 @@ struct MeshDistance {
 ///   face normal to the last digit, even where d is rounding;
 ///   ∂n/∂p = 0 on a face, s (I − e eᵀ − u uᵀ)/d on an edge of direction e, s (I − u uᵀ)/d at a
 ///   vertex (s = 1 for an open mesh).
-/// At d = 0: n = s N normalised (the face normal for an open mesh), Hessian 0.
+/// On an edge or a vertex at d = 0: φ = 0, n = N (closed) or a normal of the triangle found
+/// (open), Hessian 0.
 /// Limitation of the open mesh: a probe whose centre crosses the sheet within one step is then
 /// pushed out on the far side.
 class MeshBvh {

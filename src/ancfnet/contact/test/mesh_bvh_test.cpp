@@ -30,6 +30,38 @@ bool InsideConvex(const MeshBvh& bvh, const Vector3d& p) {
   return true;
 }
 
+// A closed, non-convex mesh: an icosphere (320 triangles) whose vertices are pushed in and out
+// at random, star-shaped about the origin, with concave edges and vertices.
+TriangleMesh BumpySphere() {
+  TriangleMesh mesh = MakeIcosphere(1.0, 2);
+  std::mt19937 rng(77);
+  std::uniform_real_distribution<double> u(0.7, 1.3);
+  for (Index v = 0; v < mesh.vertices.cols(); ++v) mesh.vertices.col(v) *= u(rng);
+  return mesh;
+}
+
+// Inside iff a ray from p crosses the surface an odd number of times (ray–triangle test of
+// Möller & Trumbore 1997): a sign independent of the pseudo-normals for any closed mesh.
+bool InsideByRayParity(const TriangleMesh& mesh, const Vector3d& p) {
+  const Vector3d dir = Vector3d(0.3127, 0.5711, 0.7594).normalized();
+  int crossings = 0;
+  for (Index t = 0; t < mesh.triangles.cols(); ++t) {
+    const Vector3d a = mesh.vertices.col(mesh.triangles(0, t));
+    const Vector3d e1 = mesh.vertices.col(mesh.triangles(1, t)) - a;
+    const Vector3d e2 = mesh.vertices.col(mesh.triangles(2, t)) - a;
+    const Vector3d h = dir.cross(e2);
+    const double det = e1.dot(h);
+    if (std::abs(det) < 1e-14) continue;
+    const Vector3d s = p - a;
+    const double u = s.dot(h) / det;
+    const Vector3d q = s.cross(e1);
+    const double v = dir.dot(q) / det;
+    if (u < 0.0 || v < 0.0 || u + v > 1.0) continue;
+    crossings += e2.dot(q) / det > 0.0;
+  }
+  return crossings % 2 == 1;
+}
+
 // The BVH descent finds the same closest point as testing every triangle, and its |φ| is the
 // least point–triangle distance.
 void CheckAgainstBruteForce(const MeshBvh& bvh, double extent, bool convex, unsigned seed) {
@@ -55,7 +87,9 @@ void CheckAgainstBruteForce(const MeshBvh& bvh, double extent, bool convex, unsi
       inside += fast.distance < 0.0;
     }
   }
-  if (convex) EXPECT_GT(inside, 10);
+  if (convex) {
+    EXPECT_GT(inside, 10);
+  }
 }
 
 TEST(MeshBvh, ClosestPointEqualsBruteForce) {
@@ -66,9 +100,32 @@ TEST(MeshBvh, ClosestPointEqualsBruteForce) {
   CheckAgainstBruteForce(MeshBvh(LoadTriangleMesh(MeshDataDir() / "unit_cube.stl")), 1.0, true, 72);
   CheckAgainstBruteForce(MeshBvh(LoadTriangleMesh(MeshDataDir() / "tetrahedron.ply")), 1.5, true,
                          73);
+  CheckAgainstBruteForce(MeshBvh(BumpySphere()), 1.6, false, 78);
   const MeshBvh sheet(LoadTriangleMesh(MeshDataDir() / "square_sheet.obj"));
   EXPECT_FALSE(sheet.closed());
   CheckAgainstBruteForce(sheet, 1.5, false, 74);
+}
+
+// The pseudo-normal sign on a non-convex closed mesh, where the closest feature of inside points
+// is often a concave edge or vertex (Bærentzen & Aanæs 2005), against ray parity.
+TEST(MeshBvh, SignOfANonConvexMeshMatchesRayParity) {
+  const MeshBvh bumpy(BumpySphere());
+  ASSERT_TRUE(bumpy.closed());
+  std::mt19937 rng(79);
+  int inside = 0, inside_at_edges_or_vertices = 0;
+  for (int k = 0; k < 3000; ++k) {
+    const Vector3d p = RandomVector(&rng, -1.4, 1.4);
+    const MeshDistance d = bumpy.CalcDistance(p);
+    if (std::abs(d.distance) < 1e-9) continue;
+    ASSERT_EQ(d.distance < 0.0, InsideByRayParity(bumpy.mesh(), p)) << p.transpose();
+    inside += d.distance < 0.0;
+    inside_at_edges_or_vertices += d.distance < 0.0 && d.feature != MeshFeature::kFace;
+  }
+  EXPECT_GT(inside, 300);
+  EXPECT_GT(inside_at_edges_or_vertices, 50);
+  std::cout << "[measured] bumpy sphere: sign = ray parity at 3000 points (" << inside
+            << " inside, " << inside_at_edges_or_vertices
+            << " of them nearest an edge or vertex)\n";
 }
 
 // A cube mesh, scaled, turned and moved, against the analytical box: the same signed distance,
@@ -108,13 +165,15 @@ TEST(MeshBvh, CubeMeshMatchesTheBox) {
             << outside << " outside)\n";
 }
 
-// ∂φ/∂p = n and ∂n/∂p = Hessian by central differences, on a closed faceted sphere and an
-// open sheet, skipping points whose perturbations change the closest feature.
+// ∂φ/∂p = n and ∂n/∂p = Hessian by central differences, on a closed faceted sphere, a closed
+// non-convex mesh and an open sheet, skipping points whose perturbations change the closest
+// feature.
 TEST(MeshBvh, GradientAndHessianMatchFiniteDifferences) {
   const MeshBvh sphere(MakeIcosphere(1.0, 2));
+  const MeshBvh bumpy(BumpySphere());
   const MeshBvh sheet(LoadTriangleMesh(MeshDataDir() / "square_sheet.obj"));
   std::mt19937 rng(76);
-  for (const MeshBvh* bvh : {&sphere, &sheet}) {
+  for (const MeshBvh* bvh : {&sphere, &bumpy, &sheet}) {
     double worst_g = 0.0, worst_h = 0.0;
     int checked = 0, edges_and_vertices = 0;
     for (int k = 0; k < 600; ++k) {
@@ -130,9 +189,10 @@ TEST(MeshBvh, GradientAndHessianMatchFiniteDifferences) {
     }
     EXPECT_GT(checked, 400);
     EXPECT_GT(edges_and_vertices, 100);
-    std::cout << "[measured] mesh (" << (bvh->closed() ? "closed" : "open")
-              << "): gradient FD error " << worst_g << ", Hessian " << worst_h << " over "
-              << checked << " (" << edges_and_vertices << " at edges or vertices)\n";
+    std::cout << "[measured] mesh (" << bvh->mesh().triangles.cols() << " triangles, "
+              << (bvh->closed() ? "closed" : "open") << "): gradient FD error " << worst_g
+              << ", Hessian " << worst_h << " over " << checked << " (" << edges_and_vertices
+              << " at edges or vertices)\n";
   }
 }
 
