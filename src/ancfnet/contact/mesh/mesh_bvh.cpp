@@ -134,6 +134,10 @@ MeshDistance MeshBvh::CalcDistanceBruteForce(const Vector3d& p) const {
 
 MeshDistance MeshBvh::Finish(const Vector3d& p, Index t, const PointTriangleDistance& d) const {
   MeshDistance out;
+  if (t < 0) {  // p not finite: no triangle compared nearer than infinity
+    out.distance = std::numeric_limits<double>::quiet_NaN();
+    return out;
+  }
   out.triangle = t;
   out.closest_point = d.closest_point;
   const auto tri = mesh_.triangles.col(t);

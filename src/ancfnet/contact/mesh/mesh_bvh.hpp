@@ -42,7 +42,8 @@ struct MeshDistance {
 ///   ∂n/∂p = 0 on a face, s (I − e eᵀ − u uᵀ)/d on an edge of direction e, s (I − u uᵀ)/d at a
 ///   vertex (s = 1 for an open mesh).
 /// On an edge or a vertex at d = 0: φ = 0, n = N (closed) or a normal of the triangle found
-/// (open), Hessian 0.
+/// (open), Hessian 0. A point that is not finite gets φ = NaN (so no contact), n = e_z, Hessian 0
+/// and triangle −1.
 /// Limitation of the open mesh: a probe whose centre crosses the sheet within one step is then
 /// pushed out on the far side.
 class MeshBvh {

@@ -217,6 +217,18 @@ TEST(MeshBvh, OpenSheetIsTwoSided) {
   EXPECT_NEAR(std::abs(on.normal.z()), 1.0, 1e-15);
 }
 
+// A point that is not finite (a diverging Newton iterate) gives no contact, and no crash.
+TEST(MeshBvh, NonFinitePointGivesNaNDistance) {
+  const MeshBvh sphere(MakeIcosphere(1.0, 1));
+  for (const double bad :
+       {std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    const MeshDistance d = sphere.CalcDistance(Vector3d(0.1, bad, 0.2));
+    EXPECT_TRUE(std::isnan(d.distance));
+    EXPECT_EQ(d.triangle, -1);
+    EXPECT_TRUE(d.normal.allFinite() && d.hessian.allFinite());
+  }
+}
+
 // A closed mesh written clockwise (seen from outside) is turned the right way round.
 TEST(MeshBvh, InsideOutClosedMeshIsReoriented) {
   TriangleMesh mesh = LoadTriangleMesh(MeshDataDir() / "tetrahedron.ply");
