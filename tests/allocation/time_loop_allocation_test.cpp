@@ -8,9 +8,12 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdlib>
+#include <memory>
 
 #include "../verification/verification_scenes.hpp"
 #include "ancfnet/analysis/energy_tracker.hpp"
+#include "ancfnet/contact/mesh/icosphere.hpp"
+#include "ancfnet/forces/target_contact.hpp"
 #include "ancfnet/integrators/explicit_verlet.hpp"
 #include "ancfnet/integrators/generalized_alpha.hpp"
 #include "ancfnet/integrators/implicit_midpoint.hpp"
@@ -175,6 +178,43 @@ TEST(TimeLoopAllocation, RigidBodyWithAttachedCable) {
       << "heap requests in 40 generalised-α steps with a body";
   EXPECT_EQ(CountBodyLoopAllocations<ImplicitMidpointIntegrator>(), 0)
       << "heap requests in 40 midpoint steps with a body";
+}
+
+// A rope pressed onto a faceted sphere (a triangle-mesh target): the bounding-volume hierarchy's
+// query, run for every inspection sphere in every Newton iteration, allocates nothing.
+TEST(TimeLoopAllocation, GeneralizedAlphaWithMeshContact) {
+  ModelBuilder builder;
+  builder.SetGravity(Vector3d(0, 0, -9.81));
+  builder.AddCable({.name = "rope",
+                    .start = Vector3d(-0.4, 0.1, 0.00199),
+                    .end = Vector3d(0.4, -0.1, 0.00199),
+                    .num_elements = 4,
+                    .properties = MakeCableProperties({.youngs_modulus = 3e9, .density = 1140},
+                                                      MakeCircleSection(0.002))});
+  ContactSpec spec;
+  spec.normal = MakeDissipativeContactLaw(NormalLawKind::kCarvalhoMartins, 1e6, 0.3);
+  ContactTarget sphere;
+  sphere.kind = ContactTarget::Kind::kMesh;
+  // 1280 triangles, moved so that the rope's middle sphere (radius 2 mm) is 10 µm into it.
+  TriangleMesh mesh = MakeIcosphere(1.0, 3);
+  const Vector3d middle(0, 0, 0.00199);
+  const double gap = MeshBvh(mesh).CalcDistance(middle).distance;
+  TransformTriangleMesh(1.0, Matrix3d::Identity(), Vector3d(0, 0, gap - 0.00199), &mesh);
+  sphere.mesh = std::make_shared<const MeshBvh>(std::move(mesh));
+  spec.targets.push_back(sphere);
+  builder.SetContact(spec);
+  const Model model = builder.Build();
+  DynamicSettings settings;
+  GeneralizedAlphaIntegrator integrator(model, settings);
+  State state = MakeInitialState(model);
+  ASSERT_TRUE(integrator.Initialize(&state));
+  ASSERT_TRUE(integrator.Step(1e-4, &state).accepted);
+  const long count = CountAllocations([&] {
+    for (int i = 0; i < 40; ++i) EXPECT_TRUE(integrator.Step(1e-4, &state).accepted);
+  });
+  const TargetContact contact(model);
+  EXPECT_GT(contact.Summarize(state.q, state.v, state.contact_history).active, 0);
+  EXPECT_EQ(count, 0) << "heap requests in 40 generalised-α steps with mesh contact";
 }
 
 TEST(TimeLoopAllocation, ExplicitVerlet) {

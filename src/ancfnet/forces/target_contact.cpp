@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "ancfnet/contact/distance/point_box.hpp"
+#include "ancfnet/contact/distance/point_capsule.hpp"
 #include "ancfnet/contact/distance/point_cylinder.hpp"
 #include "ancfnet/contact/distance/point_plane.hpp"
 #include "ancfnet/contact/distance/point_sphere.hpp"
@@ -36,6 +37,15 @@ Gap CalcGap(const ContactTarget& t, const Vector3d& x) {
     case ContactTarget::Kind::kCylinder: {
       const PointCylinderDistance d =
           CalcPointCylinderDistance(x, t.point, t.normal, t.radius, t.half_length);
+      return {d.distance, d.normal, d.hessian};
+    }
+    case ContactTarget::Kind::kCapsule: {
+      const PointCapsuleDistance d =
+          CalcPointCapsuleDistance(x, t.point, t.normal, t.half_length, t.radius);
+      return {d.distance, d.normal, d.hessian};
+    }
+    case ContactTarget::Kind::kMesh: {
+      const MeshDistance d = t.mesh->CalcDistance(x);
       return {d.distance, d.normal, d.hessian};
     }
   }

@@ -1,5 +1,11 @@
 #include "ancfnet/io/contact_reader.hpp"
 
+#include <memory>
+#include <numbers>
+#include <utility>
+
+#include "ancfnet/contact/mesh/triangle_mesh.hpp"
+
 namespace ancfnet {
 namespace {
 
@@ -54,10 +60,42 @@ FrictionLaw ReadFriction(const YamlValue& value) {
   return value.Locate([&] { return MakeAmbrosioFriction(coefficient, start, end); });
 }
 
-ContactTarget ReadTarget(const YamlValue& value) {
+// A unit axis (default e_z when absent); a zero vector is refused.
+Vector3d ReadAxis(const YamlMap& map) {
+  if (!map.Find("axis")) return Vector3d::UnitZ();
+  const Vector3d axis = map.Get("axis").AsVector3();
+  if (!(axis.norm() > 0.0)) map.Get("axis").Fail("the axis must be a non-zero vector");
+  return axis.normalized();
+}
+
+// rotation: {axis: [x, y, z], angle: degrees}, R = exp(θ [a]×).
+Matrix3d ReadRotation(const YamlValue& value) {
+  const YamlMap map = value.AsMap();
+  map.CheckKeys({"axis", "angle"});
+  const double angle = map.Get("angle").AsNumber() * std::numbers::pi / 180.0;
+  return Eigen::AngleAxisd(angle, ReadAxis(map)).toRotationMatrix();
+}
+
+// The mesh file (relative to the scene's directory), scaled, rotated and moved into the world.
+std::shared_ptr<const MeshBvh> ReadMesh(const YamlMap& map,
+                                        const std::filesystem::path& scene_directory) {
+  const YamlValue file = map.Get("file");
+  const std::filesystem::path path = scene_directory / file.AsString();
+  const double scale = map.Find("scale") ? map.Get("scale").AsPositive() : 1.0;
+  const Vector3d position =
+      map.Find("position") ? map.Get("position").AsVector3() : Vector3d::Zero();
+  const Matrix3d rotation =
+      map.Find("rotation") ? ReadRotation(map.Get("rotation")) : Matrix3d::Identity();
+  TriangleMesh mesh = file.Locate([&] { return LoadTriangleMesh(path); });
+  TransformTriangleMesh(scale, rotation, position, &mesh);
+  return std::make_shared<const MeshBvh>(std::move(mesh));
+}
+
+ContactTarget ReadTarget(const YamlValue& value, const std::filesystem::path& scene_directory) {
   const YamlMap map = value.AsMap();
   ContactTarget t;
-  const std::size_t type = map.Get("type").AsChoice({"plane", "sphere", "box", "cylinder"});
+  const std::size_t type =
+      map.Get("type").AsChoice({"plane", "sphere", "box", "cylinder", "capsule", "mesh"});
   t.name = map.Find("name") ? map.Get("name").AsString() : std::string("target");
   switch (type) {
     case 0:
@@ -82,15 +120,26 @@ ContactTarget ReadTarget(const YamlValue& value) {
       if (!(t.half_extents.minCoeff() > 0.0))
         map.Get("half_extents").Fail("half extents must be > 0");
       break;
-    default:
+    case 3:
       map.CheckKeys({"name", "type", "center", "axis", "radius", "half_length"});
       t.kind = ContactTarget::Kind::kCylinder;
       t.point = map.Get("center").AsVector3();
-      t.normal = map.Find("axis") ? map.Get("axis").AsVector3() : Vector3d::UnitZ();
-      if (!(t.normal.norm() > 0.0)) map.Get("axis").Fail("the axis must be a non-zero vector");
-      t.normal.normalize();
+      t.normal = ReadAxis(map);
       t.radius = map.Get("radius").AsPositive();
       t.half_length = map.Get("half_length").AsPositive();
+      break;
+    case 4:
+      map.CheckKeys({"name", "type", "center", "axis", "radius", "half_length"});
+      t.kind = ContactTarget::Kind::kCapsule;
+      t.point = map.Get("center").AsVector3();
+      t.normal = ReadAxis(map);
+      t.radius = map.Get("radius").AsPositive();
+      t.half_length = map.Get("half_length").AsNonNegative();
+      break;
+    default:
+      map.CheckKeys({"name", "type", "file", "scale", "position", "rotation"});
+      t.kind = ContactTarget::Kind::kMesh;
+      t.mesh = ReadMesh(map, scene_directory);
       break;
   }
   return t;
@@ -98,7 +147,8 @@ ContactTarget ReadTarget(const YamlValue& value) {
 
 }  // namespace
 
-void ReadContact(const YamlValue& value, ModelBuilder* builder) {
+void ReadContact(const YamlValue& value, const std::filesystem::path& scene_directory,
+                 ModelBuilder* builder) {
   const YamlMap map = value.AsMap();
   map.CheckKeys({"law", "friction", "cable_radius", "point_mass_radius", "points_per_element",
                  "targets", "self_contact", "self_contact_geometry", "capsules_per_element"});
@@ -117,7 +167,7 @@ void ReadContact(const YamlValue& value, ModelBuilder* builder) {
   // Targets may be left out when only the threads touch each other.
   if (!spec.self_contact || map.Find("targets"))
     for (const YamlValue& target : map.Get("targets").AsList(true))
-      spec.targets.push_back(ReadTarget(target));
+      spec.targets.push_back(ReadTarget(target, scene_directory));
   value.Locate([&] { builder->SetContact(spec); });
 }
 

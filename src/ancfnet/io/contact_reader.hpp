@@ -8,14 +8,19 @@
 ///   cable_radius, point_mass_radius, points_per_element,
 ///   targets: [{name, type: plane, point, normal} | {name, type: sphere, center, radius}
 ///             | {name, type: box, center, half_extents} | {name, type: cylinder, center, axis,
-///             radius, half_length}]
+///             radius, half_length} | {name, type: capsule, center, axis, radius, half_length}
+///             | {name, type: mesh, file, scale, position, rotation: {axis, angle}}]
+
+#include <filesystem>
 
 #include "ancfnet/io/yaml_reader.hpp"
 #include "ancfnet/model/model_builder.hpp"
 
 namespace ancfnet {
 
-/// Sets the model's contact; InputError with file, line and key on any mistake.
-void ReadContact(const YamlValue& value, ModelBuilder* builder);
+/// Sets the model's contact; InputError with file, line and key on any mistake. A mesh's relative
+/// `file` is taken from `scene_directory`.
+void ReadContact(const YamlValue& value, const std::filesystem::path& scene_directory,
+                 ModelBuilder* builder);
 
 }  // namespace ancfnet

@@ -324,7 +324,7 @@ std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
   return probes;
 }
 
-Scene ReadScene(const YamlValue& root) {
+Scene ReadScene(const YamlValue& root, const std::filesystem::path& scene_directory) {
   if (root.node().IsNull())
     root.FailPlain("the scene is empty (expected a map with materials, sections and cables)");
   const YamlMap scene = root.AsMap();
@@ -366,7 +366,7 @@ Scene ReadScene(const YamlValue& root) {
   if (auto v = scene.Find("loads"))
     for (const YamlValue& item : v->AsList()) ReadLoad(item, &builder);
   if (auto v = scene.Find("damping")) ReadDamping(*v, &builder);
-  if (auto v = scene.Find("contact")) ReadContact(*v, &builder);
+  if (auto v = scene.Find("contact")) ReadContact(*v, scene_directory, &builder);
 
   result.model = root.Locate([&] { return builder.Build(); });
   if (auto v = scene.Find("probes")) result.probes = ReadProbes(*v, result.model, point_masses);
@@ -384,7 +384,8 @@ Scene ReadScene(const YamlValue& root) {
 
 }  // namespace
 
-Scene ParseScene(const std::string& yaml_text, const std::string& source_name) {
+Scene ParseScene(const std::string& yaml_text, const std::string& source_name,
+                 const std::filesystem::path& scene_directory) {
   YAML::Node root;
   try {
     root = YAML::Load(yaml_text);
@@ -392,7 +393,7 @@ Scene ParseScene(const std::string& yaml_text, const std::string& source_name) {
     ThrowYamlError(source_name, error);
   }
   try {
-    return ReadScene(YamlValue::Root(root, source_name));
+    return ReadScene(YamlValue::Root(root, source_name), scene_directory);
   } catch (const YAML::Exception& error) {  // a node access the reader did not foresee
     ThrowYamlError(source_name, error);
   }
@@ -405,7 +406,7 @@ Scene LoadScene(const std::filesystem::path& file) {
     throw InputError(fmt::format("{}: cannot open scene file", file.string()));
   std::ostringstream text;
   text << in.rdbuf();
-  return ParseScene(text.str(), file.string());
+  return ParseScene(text.str(), file.string(), file.parent_path());
 }
 
 }  // namespace ancfnet

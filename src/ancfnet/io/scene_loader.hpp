@@ -15,9 +15,12 @@ namespace ancfnet {
 Scene LoadScene(const std::filesystem::path& file);
 
 /// Parses a scene from YAML text; `source_name` names it in messages and in Scene::source.
+/// Relative paths in the scene (a mesh target's `file`) are taken from `scene_directory` (the
+/// working directory when empty); LoadScene passes the scene file's directory.
 /// Throws InputError with a one-line message "SOURCE:LINE:COLUMN: what is wrong (key 'KEY')" on
 /// malformed YAML, an unknown or missing key, a value of the wrong type or out of range, an
 /// unknown name, or a model the ModelBuilder refuses.
-Scene ParseScene(const std::string& yaml_text, const std::string& source_name = "<string>");
+Scene ParseScene(const std::string& yaml_text, const std::string& source_name = "<string>",
+                 const std::filesystem::path& scene_directory = {});
 
 }  // namespace ancfnet

@@ -1,9 +1,11 @@
 #pragma once
 /// @file Contact of the model's cables and point masses with rigid, fixed targets (a plane, a
-/// sphere, a box, a cylinder) and with each other: the description. The forces are made by
-/// forces/target_contact.hpp and forces/self_contact.hpp. Cables are probed by inspection spheres
-/// of the thread's radius at points along each element's centre line; point masses are spheres.
+/// sphere, a box, a cylinder, a capsule, a triangle mesh) and with each other: the description.
+/// The forces are made by forces/target_contact.hpp and forces/self_contact.hpp. Cables are
+/// probed by inspection spheres of the thread's radius at points along each element's centre
+/// line; point masses are spheres.
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -11,20 +13,25 @@
 #include "ancfnet/common/types.hpp"
 #include "ancfnet/contact/laws/friction_law.hpp"
 #include "ancfnet/contact/laws/normal_law.hpp"
+#include "ancfnet/contact/mesh/mesh_bvh.hpp"
 
 namespace ancfnet {
 
 /// A rigid, fixed target.
 struct ContactTarget {
-  enum class Kind { kPlane, kSphere, kBox, kCylinder };
+  enum class Kind { kPlane, kSphere, kBox, kCylinder, kCapsule, kMesh };
   Kind kind = Kind::kPlane;
   std::string name;
-  Vector3d point = Vector3d::Zero();         ///< plane: a point of it; others: the centre (m)
-  Vector3d normal = Vector3d::UnitZ();       ///< plane: outward unit normal; cylinder: unit axis
-  double radius = 0.0;                       ///< sphere, cylinder (m)
-  double half_length = 0.0;                  ///< cylinder (m)
+  Vector3d point = Vector3d::Zero();  ///< plane: a point of it; others: the centre (m)
+  Vector3d normal =
+      Vector3d::UnitZ();     ///< plane: outward unit normal; cylinder, capsule: unit axis
+  double radius = 0.0;       ///< sphere, cylinder, capsule (m)
+  double half_length = 0.0;  ///< cylinder (> 0), capsule (≥ 0): of the axis (m)
   Vector3d half_extents = Vector3d::Zero();  ///< box (m)
   Matrix3d rotation = Matrix3d::Identity();  ///< box: R_WB
+  /// mesh: the surface in world coordinates (scale and pose applied when loaded), shared by the
+  /// copies of a Model.
+  std::shared_ptr<const MeshBvh> mesh;
 };
 
 struct ContactSpec {

@@ -110,6 +110,7 @@ void ModelBuilder::SetContact(const ContactSpec& contact) {
     switch (t.kind) {
       case ContactTarget::Kind::kPlane:
       case ContactTarget::Kind::kCylinder:
+      case ContactTarget::Kind::kCapsule:
         if (std::abs(t.normal.norm() - 1.0) > 1e-6)
           throw InputError(fmt::format("contact target '{}': its normal or axis must be a unit "
                                        "vector",
@@ -118,6 +119,14 @@ void ModelBuilder::SetContact(const ContactSpec& contact) {
           RequirePositive(t.radius, "cylinder radius");
           RequirePositive(t.half_length, "cylinder half length");
         }
+        if (t.kind == ContactTarget::Kind::kCapsule) {
+          RequirePositive(t.radius, "capsule radius");
+          RequireNonNegative(t.half_length, "capsule half length");
+        }
+        break;
+      case ContactTarget::Kind::kMesh:
+        if (t.mesh == nullptr)
+          throw InputError(fmt::format("contact target '{}': a mesh target needs a mesh", t.name));
         break;
       case ContactTarget::Kind::kSphere:
         RequirePositive(t.radius, "sphere radius");
@@ -131,7 +140,8 @@ void ModelBuilder::SetContact(const ContactSpec& contact) {
   }
   model_.contact_ = contact;
   for (ContactTarget& t : model_.contact_.targets)
-    if (t.kind == ContactTarget::Kind::kPlane || t.kind == ContactTarget::Kind::kCylinder)
+    if (t.kind == ContactTarget::Kind::kPlane || t.kind == ContactTarget::Kind::kCylinder ||
+        t.kind == ContactTarget::Kind::kCapsule)
       t.normal.normalize();
 }
 

@@ -29,4 +29,15 @@ PointSegmentDistance CalcPointSegmentDistance(const Vector3d& p, const Vector3d&
   return out;
 }
 
+Matrix3d CalcPointSegmentHessian(const PointSegmentDistance& d, const Vector3d& a,
+                                 const Vector3d& b) {
+  if (!(d.distance > 0.0)) return Matrix3d::Zero();
+  Matrix3d h = Matrix3d::Identity() - d.direction * d.direction.transpose();
+  if (d.region == PointSegmentRegion::kInterior) {
+    const Vector3d e = (b - a).normalized();
+    h -= e * e.transpose();
+  }
+  return h / d.distance;
+}
+
 }  // namespace ancfnet

@@ -38,4 +38,12 @@ struct PointSegmentDistance {
 PointSegmentDistance CalcPointSegmentDistance(const Vector3d& p, const Vector3d& a,
                                               const Vector3d& b);
 
+/// ∂²d/∂p² = ∂u/∂p of a point–segment distance d (1/m), given the result `d` of
+/// CalcPointSegmentDistance(p, a, b): in the interior (I − e eᵀ − u uᵀ)/d with e = (b − a)/|b − a|
+/// (the distance to a line), at an end (I − u uᵀ)/d (the distance to a point). Zero where d = 0
+/// (the 1/d term is unbounded; a zero keeps an iteration matrix finite). docs/theory.md, "Capsule
+/// and mesh targets".
+Matrix3d CalcPointSegmentHessian(const PointSegmentDistance& d, const Vector3d& a,
+                                 const Vector3d& b);
+
 }  // namespace ancfnet

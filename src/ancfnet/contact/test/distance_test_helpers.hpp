@@ -1,7 +1,12 @@
 #pragma once
-// Shared helpers of the distance-function tests: seeded random geometry, central differences
-// and a ternary search that minimises convex functions independently of the code under test.
+// Shared helpers of the distance-function tests: seeded random geometry, central differences,
+// their check of a signed distance's gradient and Hessian, and a ternary search that minimises
+// convex functions independently of the code under test.
 
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <random>
 
@@ -62,6 +67,36 @@ inline double TernaryMin(const std::function<double(double)>& f, double lo, doub
     }
   }
   return f(0.5 * (lo + hi));
+}
+
+// Gradient and Hessian of φ against central differences, skipping configurations whose
+// perturbations change the region key.
+template <class Eval, class Key>
+void CheckGradientAndHessian(const Eval& eval, const Key& key, const Vector3d& p, double* worst_g,
+                             double* worst_h, int* checked) {
+  const auto d = eval(p);
+  bool same = true;
+  const double h = 1e-6;
+  const Vector3d fd = CentralGradient<3>(
+      [&](const Vector3d& x) {
+        same = same && key(x) == key(p);
+        return eval(x).distance;
+      },
+      p, h);
+  const Matrix3d fdh = CentralJacobian(
+      [&](const Vector3d& x) {
+        same = same && key(x) == key(p);
+        return eval(x).normal;
+      },
+      p, h);
+  if (!same || std::abs(d.distance) < 1e-2) return;
+  const double eg = (fd - d.normal).norm();
+  const double eh = (fdh - d.hessian).norm() / std::max(1.0, d.hessian.norm());
+  EXPECT_LT(eg, 1e-6);
+  EXPECT_LT(eh, 1e-6);
+  *worst_g = std::max(*worst_g, eg);
+  *worst_h = std::max(*worst_h, eh);
+  ++*checked;
 }
 
 }  // namespace test

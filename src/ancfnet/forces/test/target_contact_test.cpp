@@ -1,11 +1,15 @@
 // The contact forces with rigid targets: the Jacobians of the generalised forces against central
-// differences, for a bent cable pressed into a sphere and a box (inspection spheres between the
-// nodes, so the slopes take part) and for a point mass on a plane, with friction.
+// differences, for a bent cable pressed into a sphere, a capsule and a faceted sphere (inspection
+// spheres between the nodes, so the slopes take part) and for a point mass on a plane, with
+// friction.
 
 #include "ancfnet/forces/target_contact.hpp"
 
 #include <gtest/gtest.h>
 
+#include <memory>
+
+#include "ancfnet/contact/mesh/icosphere.hpp"
 #include "ancfnet/model/model_builder.hpp"
 
 namespace ancfnet {
@@ -85,6 +89,19 @@ TEST(TargetContact, JacobiansMatchFiniteDifferencesOnAPlane) {
   plane.point = Vector3d(0, 0, 0.3);
   plane.normal = Vector3d(0.1, 0.0, 1.0).normalized();
   ExpectJacobiansMatchFiniteDifferences(MakePressedCable(plane, true));
+}
+
+TEST(TargetContact, JacobiansMatchFiniteDifferencesOnACapsuleAndAMesh) {
+  ContactTarget capsule;
+  capsule.kind = ContactTarget::Kind::kCapsule;
+  capsule.normal = Vector3d::UnitY();
+  capsule.half_length = 0.1;
+  capsule.radius = 0.3;
+  ExpectJacobiansMatchFiniteDifferences(MakePressedCable(capsule, false));
+  ContactTarget mesh;
+  mesh.kind = ContactTarget::Kind::kMesh;
+  mesh.mesh = std::make_shared<const MeshBvh>(MakeIcosphere(0.3, 4));
+  ExpectJacobiansMatchFiniteDifferences(MakePressedCable(mesh, false));
 }
 
 }  // namespace
