@@ -117,6 +117,8 @@ TargetContact::PairForce TargetContact::CalcPairForce(const ContactTarget& targe
   const Vector3d& n = gap.normal;
   r.touching = true;
   r.penetration = penetration;
+  r.surface_point = x - gap.distance * n;
+  r.normal = n;
   r.rate = -n.dot(x_dot);  // δ̇ > 0 approaching
   const ContactSpec& spec = model_.contact();
   // history > 0: the impact speed frozen at first touch; ≤ 0: apart at the last accepted
@@ -140,6 +142,7 @@ TargetContact::PairForce TargetContact::CalcPairForce(const ContactTarget& targe
     const TangentialFriction f =
         CalcTangentialFriction(*spec.friction, tangent * x_dot, normal.force);
     r.force += f.force;
+    r.friction = f.force;
     r.dissipative += f.force;
     if (with_jacobian) {
       r.dforce_dv += f.dforce_dvelocity * tangent + f.dforce_dnormal * dF_dv;
@@ -158,9 +161,11 @@ void TargetContact::ForEachTouchingPair(const VectorXd& q, const VectorXd& v,
     Vector3d x, x_dot;
     Locate(probes_[p], q, v, &x, &x_dot);
     for (std::size_t t = 0; t < targets.size(); ++t) {
-      const PairForce f = CalcPairForce(targets[t], probes_[p], x, x_dot,
-                                        history[p * targets.size() + t], with_jacobian);
-      if (f.touching) visit(probes_[p], f);
+      PairForce f = CalcPairForce(targets[t], probes_[p], x, x_dot, history[p * targets.size() + t],
+                                  with_jacobian);
+      if (!f.touching) continue;
+      f.target = static_cast<Index>(t);
+      visit(probes_[p], f);
     }
   }
 }
@@ -232,6 +237,23 @@ TargetContact::Summary TargetContact::Summarize(const VectorXd& q, const VectorX
     s.max_penetration = std::max(s.max_penetration, f.penetration);
   });
   return s;
+}
+
+void TargetContact::CollectContacts(const VectorXd& q, const VectorXd& v,
+                                    const std::vector<double>& history,
+                                    std::vector<ContactPoint>* out) const {
+  ForEachTouchingPair(q, v, history, false, [&](const ContactProbe& probe, const PairForce& f) {
+    out->push_back({.point_W = f.surface_point,
+                    .normal_W = f.normal,
+                    .penetration = f.penetration,
+                    .normal_force = f.normal_force,
+                    .friction_force_W = f.friction,
+                    .force_W = f.force,
+                    .target = f.target,
+                    .element = probe.element,
+                    .point_mass = probe.point_mass,
+                    .xi = probe.xi});
+  });
 }
 
 }  // namespace ancfnet

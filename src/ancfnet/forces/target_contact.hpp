@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "ancfnet/assembly/forces.hpp"
+#include "ancfnet/contact/contact_point.hpp"
 #include "ancfnet/model/model.hpp"
 #include "ancfnet/state/workspace.hpp"
 
@@ -57,20 +58,32 @@ class TargetContact {
   };
   Summary Summarize(const VectorXd& q, const VectorXd& v, const std::vector<double>& history) const;
 
+  /// Appends a record of every touching (probe, target) pair at (q, v) to `out`, probes in the
+  /// order of MakeContactProbes and, for each, targets in the order of ContactSpec::targets. The
+  /// forces are those AddForces applies (force_W = F n + f_t on the probe). For outputs: it
+  /// allocates as `out` grows.
+  void CollectContacts(const VectorXd& q, const VectorXd& v, const std::vector<double>& history,
+                       std::vector<ContactPoint>* out) const;
+
  private:
   // One pair's force and its derivatives with respect to the probe's position and velocity.
   struct PairForce {
     bool touching = false;
+    Index target = -1;
     double penetration = 0.0, rate = 0.0, normal_force = 0.0, energy = 0.0;
-    Vector3d force = Vector3d::Zero();        // f on the probe (N)
-    Vector3d dissipative = Vector3d::Zero();  // its damping and friction part
+    Vector3d surface_point = Vector3d::Zero();  // closest point of the target's surface (m)
+    Vector3d normal = Vector3d::UnitZ();        // outward normal of the target
+    Vector3d force = Vector3d::Zero();          // f on the probe (N)
+    Vector3d friction = Vector3d::Zero();       // its tangential friction part
+    Vector3d dissipative = Vector3d::Zero();    // its damping and friction part
     Matrix3d dforce_dx = Matrix3d::Zero(), dforce_dv = Matrix3d::Zero();
   };
   PairForce CalcPairForce(const ContactTarget& target, const ContactProbe& probe, const Vector3d& x,
                           const Vector3d& x_dot, double approach_speed, bool with_jacobian) const;
   void Locate(const ContactProbe& probe, const VectorXd& q, const VectorXd& v, Vector3d* x,
               Vector3d* x_dot) const;
-  // Calls visit(probe, force) for every touching (probe, target) pair at (q, v).
+  // Calls visit(probe, force) for every touching (probe, target) pair at (q, v); force.target is
+  // the target's index.
   template <class Visit>
   void ForEachTouchingPair(const VectorXd& q, const VectorXd& v, const std::vector<double>& history,
                            bool with_jacobian, Visit&& visit) const;
