@@ -186,7 +186,10 @@ TEST(ContactVtkWriter, WritesOneVertexPerContactAndTheCollection) {
 TEST(RunScene, ContactFramesHoldTheActiveContacts) {
   const Scene scene = ParseScene(kScene, "scene.yaml");
   const std::filesystem::path dir = MakeTestDirectory();
-  const RunSummary summary = RunScene(scene, {.output_dir = dir, .show_progress = false});
+  RunOptions options;
+  options.output_dir = dir;
+  options.show_progress = false;
+  const RunSummary summary = RunScene(scene, options);
   ASSERT_TRUE(summary.completed) << summary.message;
   ASSERT_EQ(summary.outputs, 3);
   // probes.csv: time, on_floor (10 columns), all (10 columns): all.active is column 11.
@@ -199,7 +202,9 @@ TEST(RunScene, ContactFramesHoldTheActiveContacts) {
     std::string cell;
     for (int column = 0; column <= 11; ++column) std::getline(row, cell, ',');
     const int active = std::stoi(cell);
-    if (frame == 0) EXPECT_EQ(active, 9);
+    if (frame == 0) {
+      EXPECT_EQ(active, 9);
+    }
     EXPECT_GE(active, 1);
     EXPECT_EQ(NumberOfPoints(ReadFile(dir / fmt::format("contacts_{:06d}.vtp", frame))), active)
         << "frame " << frame;
