@@ -45,7 +45,7 @@ Peak Deploy(int elements_per_thread) {
       scene.model, scene.analysis.dynamics, 0.01,
       [&](const State& s, const EnergyAccount& e) {
         std::vector<double> area;
-        EvaluateProbe(mouth, scene.model, s, e, &area);
+        EvaluateProbe(mouth, scene.model, s, e, {}, &area);
         if (first) peak.first_area = area[0];
         first = false;
         if (area[0] > peak.area) peak = {area[0], s.t, area[0], peak.first_area};

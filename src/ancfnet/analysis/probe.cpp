@@ -1,5 +1,6 @@
 #include "ancfnet/analysis/probe.hpp"
 
+#include <algorithm>
 #include <limits>
 
 #include "ancfnet/analysis/net_metrics.hpp"
@@ -33,6 +34,17 @@ std::vector<std::string> ProbeColumns(const Probe& probe) {
       return {n + ".x", n + ".y", n + ".z", n + ".qw", n + ".qx", n + ".qy", n + ".qz"};
     case ProbeQuantity::kBodyVelocity:
       return {n + ".vx", n + ".vy", n + ".vz", n + ".wx", n + ".wy", n + ".wz"};
+    case ProbeQuantity::kContact:
+      return {n + ".active",
+              n + ".normal_force",
+              n + ".friction_force",
+              n + ".fx",
+              n + ".fy",
+              n + ".fz",
+              n + ".mx",
+              n + ".my",
+              n + ".mz",
+              n + ".max_penetration"};
   }
   return {};
 }
@@ -57,8 +69,25 @@ Vector3d CalcNetCentroid(const Model& model, const Net& net, const VectorXd& q) 
   return CalcCentroid(knots);
 }
 
+ContactProbeValues CalcContactProbeValues(const std::vector<ContactPoint>& contacts, Index target,
+                                          const Vector3d& reference) {
+  ContactProbeValues r;
+  for (const ContactPoint& c : contacts) {
+    if (target >= 0 && c.target != target) continue;
+    ++r.active;
+    r.normal_force += c.normal_force;
+    r.friction_force += c.friction_force_W.norm();
+    r.max_penetration = std::max(r.max_penetration, c.penetration);
+    if (c.target < 0) continue;  // a self-contact: no force on a target
+    r.force_on_target -= c.force_W;
+    r.moment_on_target -= (c.point_W - reference).cross(c.force_W);
+  }
+  return r;
+}
+
 void EvaluateProbe(const Probe& probe, const Model& model, const State& state,
-                   const EnergyAccount& energy, std::vector<double>* values) {
+                   const EnergyAccount& energy, const std::vector<ContactPoint>& contacts,
+                   std::vector<double>* values) {
   switch (probe.quantity) {
     case ProbeQuantity::kPosition:
     case ProbeQuantity::kVelocity: {
@@ -120,6 +149,17 @@ void EvaluateProbe(const Probe& probe, const Model& model, const State& state,
       const BodyVelocity v = CalcBodyVelocity(model.rigid_bodies()[probe.body], state.v);
       values->insert(values->end(),
                      {v.v_WB.x(), v.v_WB.y(), v.v_WB.z(), v.w_B.x(), v.w_B.y(), v.w_B.z()});
+      break;
+    }
+    case ProbeQuantity::kContact: {
+      const Vector3d reference =
+          probe.target >= 0 ? model.contact().targets[probe.target].point : Vector3d::Zero();
+      const ContactProbeValues c = CalcContactProbeValues(contacts, probe.target, reference);
+      const Vector3d& f = c.force_on_target;
+      const Vector3d& m = c.moment_on_target;
+      values->insert(values->end(),
+                     {static_cast<double>(c.active), c.normal_force, c.friction_force, f.x(), f.y(),
+                      f.z(), m.x(), m.y(), m.z(), c.max_penetration});
       break;
     }
   }

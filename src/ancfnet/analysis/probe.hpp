@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "ancfnet/analysis/energy.hpp"
+#include "ancfnet/contact/contact_point.hpp"
 #include "ancfnet/model/model.hpp"
 #include "ancfnet/state/state.hpp"
 
@@ -26,11 +27,15 @@ enum class ProbeQuantity {
   /// NAME.vx/vy/vz, NAME.wx/wy/wz: a rigid body's velocity ẋ_WB (m/s, world) and angular
   /// velocity ω_B (rad/s, body frame)
   kBodyVelocity,
+  /// NAME.active, NAME.normal_force, NAME.friction_force, NAME.fx/fy/fz, NAME.mx/my/mz,
+  /// NAME.max_penetration: the active contacts (of one target, or all), see ContactProbeValues.
+  kContact,
 };
 
 /// A named probe. Position and velocity probes read a point (a cable material point or a point
 /// mass); energy probes read the whole system; net probes read net `net`; link probes link `link`
-/// (0 once it has failed); body probes body `body`.
+/// (0 once it has failed); body probes body `body`; contact probes the contacts with target
+/// `target` (−1: all contacts).
 struct Probe {
   std::string name;
   ProbeQuantity quantity = ProbeQuantity::kPosition;
@@ -38,6 +43,7 @@ struct Probe {
   Index net = -1;
   Index link = -1;
   Index body = -1;
+  Index target = -1;  ///< kContact: index into ContactSpec::targets, or −1 for every contact
   Vector3d reference = Vector3d::Zero();  ///< kDistance: the centroid at the start
 };
 
@@ -52,12 +58,34 @@ ThreadTension CalcMaxThreadTension(const Model& model, const Net& net, const Vec
 /// Mean position of a net's knots (m).
 Vector3d CalcNetCentroid(const Model& model, const Net& net, const VectorXd& q);
 
+/// What a contact probe reports of a set of active contacts (ContactPoint records): their number,
+/// Σ F_n (N), Σ |f_t| (N, the sum of the friction forces' magnitudes), the force the targets feel,
+/// F = −Σ f (N, f = force_W on the probe, self-contacts left out), its moment about `reference`,
+/// M = Σ (p − reference) × (−f) (N m, p = point_W on the target's surface), and the largest
+/// penetration max δ (m; 0 without contact).
+struct ContactProbeValues {
+  int active = 0;
+  double normal_force = 0.0;
+  double friction_force = 0.0;
+  Vector3d force_on_target = Vector3d::Zero();
+  Vector3d moment_on_target = Vector3d::Zero();
+  double max_penetration = 0.0;
+};
+
+/// ContactProbeValues of the records with `target` (−1: every record; the target force and moment
+/// then add up the forces on all targets, about `reference`).
+ContactProbeValues CalcContactProbeValues(const std::vector<ContactPoint>& contacts, Index target,
+                                          const Vector3d& reference);
+
 /// Column names of a probe: NAME.x/y/z, NAME.vx/vy/vz, or NAME.kinetic, NAME.strain,
 /// NAME.gravity, NAME.work, NAME.dissipated.
 std::vector<std::string> ProbeColumns(const Probe& probe);
 
-/// Values of a probe in the order of ProbeColumns, appended to `values`.
+/// Values of a probe in the order of ProbeColumns, appended to `values`. `contacts` are the active
+/// contacts at `state` (TargetContact::CollectContacts), read by contact probes only. A contact
+/// probe of one target takes moments about that target's `point`, of all targets about the origin.
 void EvaluateProbe(const Probe& probe, const Model& model, const State& state,
-                   const EnergyAccount& energy, std::vector<double>* values);
+                   const EnergyAccount& energy, const std::vector<ContactPoint>& contacts,
+                   std::vector<double>* values);
 
 }  // namespace ancfnet

@@ -115,7 +115,7 @@ void TargetContact::Locate(const ContactProbe& probe, const VectorXd& q, const V
   }
 }
 
-ContactPairForce TargetContact::CalcPairForce(const ContactTarget& target,
+TargetContact::PairForce TargetContact::CalcPairForce(const ContactTarget& target,
                                               const ContactProbe& probe, const Vector3d& x,
                                               const Vector3d& x_dot, double approach_speed,
                                               bool with_jacobian) const {
@@ -127,8 +127,12 @@ ContactPairForce TargetContact::CalcPairForce(const ContactTarget& target,
                                      .normal_derivative = gap.hessian,
                                      .velocity = x_dot};
   const ContactSpec& spec = model_.contact();
-  return CalcContactPairForce(spec.normal, spec.friction, kinematics, approach_speed,
-                              with_jacobian);
+  PairForce r;
+  static_cast<ContactPairForce&>(r) =
+      CalcContactPairForce(spec.normal, spec.friction, kinematics, approach_speed, with_jacobian);
+  r.surface_point = x - gap.distance * gap.normal;
+  r.normal = gap.normal;
+  return r;
 }
 
 template <class Visit>
@@ -140,9 +144,11 @@ void TargetContact::ForEachTouchingPair(const VectorXd& q, const VectorXd& v,
     Vector3d x, x_dot;
     Locate(probes_[p], q, v, &x, &x_dot);
     for (std::size_t t = 0; t < targets.size(); ++t) {
-      const ContactPairForce f = CalcPairForce(targets[t], probes_[p], x, x_dot,
-                                               history[p * targets.size() + t], with_jacobian);
-      if (f.touching) visit(probes_[p], f);
+      PairForce f = CalcPairForce(targets[t], probes_[p], x, x_dot, history[p * targets.size() + t],
+                                  with_jacobian);
+      if (!f.touching) continue;
+      f.target = static_cast<Index>(t);
+      visit(probes_[p], f);
     }
   }
 }
@@ -216,6 +222,23 @@ TargetContact::Summary TargetContact::Summarize(const VectorXd& q, const VectorX
     s.max_penetration = std::max(s.max_penetration, f.penetration);
   });
   return s;
+}
+
+void TargetContact::CollectContacts(const VectorXd& q, const VectorXd& v,
+                                    const std::vector<double>& history,
+                                    std::vector<ContactPoint>* out) const {
+  ForEachTouchingPair(q, v, history, false, [&](const ContactProbe& probe, const PairForce& f) {
+    out->push_back({.point_W = f.surface_point,
+                    .normal_W = f.normal,
+                    .penetration = f.penetration,
+                    .normal_force = f.normal_force,
+                    .friction_force_W = f.friction,
+                    .force_W = f.force,
+                    .target = f.target,
+                    .element = probe.element,
+                    .point_mass = probe.point_mass,
+                    .xi = probe.xi});
+  });
 }
 
 }  // namespace ancfnet

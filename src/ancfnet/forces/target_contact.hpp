@@ -9,6 +9,7 @@
 
 #include "ancfnet/assembly/forces.hpp"
 #include "ancfnet/contact/contact_pair_force.hpp"
+#include "ancfnet/contact/contact_point.hpp"
 #include "ancfnet/model/model.hpp"
 #include "ancfnet/state/workspace.hpp"
 
@@ -58,13 +59,26 @@ class TargetContact {
   };
   Summary Summarize(const VectorXd& q, const VectorXd& v, const std::vector<double>& history) const;
 
+  /// Appends a record of every touching (probe, target) pair at (q, v) to `out`, probes in the
+  /// order of MakeContactProbes and, for each, targets in the order of ContactSpec::targets. The
+  /// forces are those AddForces applies (force_W = F n + f_t on the probe). For outputs: it
+  /// allocates as `out` grows.
+  void CollectContacts(const VectorXd& q, const VectorXd& v, const std::vector<double>& history,
+                       std::vector<ContactPoint>* out) const;
+
  private:
-  ContactPairForce CalcPairForce(const ContactTarget& target, const ContactProbe& probe,
-                                 const Vector3d& x, const Vector3d& x_dot, double approach_speed,
-                                 bool with_jacobian) const;
+  // One pair's force (contact/contact_pair_force.hpp) and where it acts.
+  struct PairForce : ContactPairForce {
+    Index target = -1;
+    Vector3d surface_point = Vector3d::Zero();  // closest point of the target's surface (m)
+    Vector3d normal = Vector3d::UnitZ();        // outward normal of the target
+  };
+  PairForce CalcPairForce(const ContactTarget& target, const ContactProbe& probe, const Vector3d& x,
+                          const Vector3d& x_dot, double approach_speed, bool with_jacobian) const;
   void Locate(const ContactProbe& probe, const VectorXd& q, const VectorXd& v, Vector3d* x,
               Vector3d* x_dot) const;
-  // Calls visit(probe, force) for every touching (probe, target) pair at (q, v).
+  // Calls visit(probe, force) for every touching (probe, target) pair at (q, v); force.target is
+  // the target's index.
   template <class Visit>
   void ForEachTouchingPair(const VectorXd& q, const VectorXd& v, const std::vector<double>& history,
                            bool with_jacobian, Visit&& visit) const;

@@ -1,15 +1,15 @@
 #include "ancfnet/io/probe_csv_writer.hpp"
 
-#include <cmath>
 #include <fmt/format.h>
+
+#include <cmath>
 #include <iterator>
 
 #include "ancfnet/common/error.hpp"
 
 namespace ancfnet {
 
-ProbeCsvWriter::ProbeCsvWriter(const std::filesystem::path& path,
-                               const std::vector<Probe>& probes)
+ProbeCsvWriter::ProbeCsvWriter(const std::filesystem::path& path, const std::vector<Probe>& probes)
     : path_(path), file_(std::fopen(path.c_str(), "w")), probes_(probes) {
   if (!file_) throw InputError(fmt::format("cannot write {}", path.string()));
   columns_.push_back("time");
@@ -20,10 +20,11 @@ ProbeCsvWriter::ProbeCsvWriter(const std::filesystem::path& path,
   WriteAndFlush(fmt::format("{}\n", fmt::join(columns_, ",")));
 }
 
-void ProbeCsvWriter::Append(const Model& model, const State& state, const EnergyAccount& energy) {
+void ProbeCsvWriter::Append(const Model& model, const State& state, const EnergyAccount& energy,
+                            const std::vector<ContactPoint>& contacts) {
   values_.clear();
   values_.push_back(state.t);
-  for (const Probe& probe : probes_) EvaluateProbe(probe, model, state, energy, &values_);
+  for (const Probe& probe : probes_) EvaluateProbe(probe, model, state, energy, contacts, &values_);
   for (std::size_t i = 0; i < values_.size(); ++i) {
     if (!std::isfinite(values_[i]))
       throw SolverError(fmt::format("non-finite value in probe column {}", columns_[i]), state.t);

@@ -29,11 +29,13 @@ class ProbeCsvWriter {
   ProbeCsvWriter(ProbeCsvWriter&&) = default;
   ProbeCsvWriter& operator=(ProbeCsvWriter&&) = default;
 
-  /// Writes the row of `state` (time = state.t) evaluated with EvaluateProbe. Throws
+  /// Writes the row of `state` (time = state.t) evaluated with EvaluateProbe, `contacts` being
+  /// the active contacts at `state` (read by contact probes only). Throws
   /// SolverError("non-finite value in probe column NAME", state.t) and writes nothing when a value
   /// is NaN or infinite; throws InputError when the file cannot be written. No allocation after
   /// the first row.
-  void Append(const Model& model, const State& state, const EnergyAccount& energy);
+  void Append(const Model& model, const State& state, const EnergyAccount& energy,
+              const std::vector<ContactPoint>& contacts);
 
   /// The column names, `time` first.
   const std::vector<std::string>& columns() const { return columns_; }

@@ -283,7 +283,8 @@ std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
                                     {"max_tension", ProbeQuantity::kMaxTension},
                                     {"link_force", ProbeQuantity::kLinkForce},
                                     {"body_pose", ProbeQuantity::kBodyPose},
-                                    {"body_velocity", ProbeQuantity::kBodyVelocity}});
+                                    {"body_velocity", ProbeQuantity::kBodyVelocity},
+                                    {"contact", ProbeQuantity::kContact}});
     const bool whole_system = probe.quantity == ProbeQuantity::kEnergy;
     const bool of_a_point =
         probe.quantity == ProbeQuantity::kPosition || probe.quantity == ProbeQuantity::kVelocity;
@@ -292,6 +293,7 @@ std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
     const bool of_a_link = probe.quantity == ProbeQuantity::kLinkForce;
     const bool of_a_body = probe.quantity == ProbeQuantity::kBodyPose ||
                            probe.quantity == ProbeQuantity::kBodyVelocity;
+    const bool of_contacts = probe.quantity == ProbeQuantity::kContact;
     if (of_a_body)
       map.CheckKeys({"name", "quantity", "body"});
     else if (of_a_point)
@@ -300,6 +302,8 @@ std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
       map.CheckKeys({"name", "quantity"});
     else if (of_a_link)
       map.CheckKeys({"name", "quantity", "link"});
+    else if (of_contacts)
+      map.CheckKeys({"name", "quantity", "target"});
     else
       map.CheckKeys({"name", "quantity", "net"});
     const YamlValue name = map.Get("name");
@@ -315,6 +319,12 @@ std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
     } else if (of_a_link) {
       probe.link =
           ReadNamedIndex(map.Get("link"), model.links(), "spring-damper", "spring-dampers");
+    } else if (of_contacts) {
+      if (!model.contact().enabled())
+        map.Get("quantity").Fail("a contact probe needs contact targets (a `contact:` section)");
+      if (auto target = map.Find("target"))
+        probe.target =
+            ReadNamedIndex(*target, model.contact().targets, "contact target", "targets");
     } else if (!whole_system) {
       probe.net = ReadNamedIndex(map.Get("net"), model.nets(), "net", "nets");
       probe.reference = CalcNetCentroid(model, model.nets()[probe.net], model.initial_positions());

@@ -31,9 +31,9 @@ Json FailuresJson(const std::vector<FailureEvent>& failures) {
 }
 
 Json ProbeJson(const Probe& probe, const Model& model, const State& state,
-               const EnergyAccount& energy) {
+               const EnergyAccount& energy, const std::vector<ContactPoint>& contacts) {
   std::vector<double> values;
-  EvaluateProbe(probe, model, state, energy, &values);
+  EvaluateProbe(probe, model, state, energy, contacts, &values);
   switch (probe.quantity) {
     case ProbeQuantity::kPosition:
     case ProbeQuantity::kVelocity: {
@@ -78,6 +78,14 @@ Json ProbeJson(const Probe& probe, const Model& model, const State& state,
       return {{"body_velocity",
                {{"linear", {Number(values[0]), Number(values[1]), Number(values[2])}},
                 {"angular_body", {Number(values[3]), Number(values[4]), Number(values[5])}}}}};
+    case ProbeQuantity::kContact:
+      return {{"contact",
+               {{"active", static_cast<int>(values[0])},
+                {"normal_force", Number(values[1])},
+                {"friction_force", Number(values[2])},
+                {"force", {Number(values[3]), Number(values[4]), Number(values[5])}},
+                {"moment", {Number(values[6]), Number(values[7]), Number(values[8])}},
+                {"max_penetration", Number(values[9])}}}};
   }
   return Json::object();
 }
@@ -85,10 +93,11 @@ Json ProbeJson(const Probe& probe, const Model& model, const State& state,
 }  // namespace
 
 void WriteSummaryJson(const std::filesystem::path& path, const RunSummary& summary,
-                      const std::vector<Probe>& probes, const Model& model, const State& state) {
+                      const std::vector<Probe>& probes, const Model& model, const State& state,
+                      const std::vector<ContactPoint>& contacts) {
   Json probe_values = Json::object();
   for (const Probe& probe : probes)
-    probe_values[probe.name] = ProbeJson(probe, model, state, summary.energy);
+    probe_values[probe.name] = ProbeJson(probe, model, state, summary.energy, contacts);
   const Json json = {
       {"status", summary.completed ? "completed" : "failed"},
       {"message", summary.message},

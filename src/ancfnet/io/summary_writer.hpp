@@ -31,14 +31,17 @@ struct RunSummary {
 };
 
 /// Writes `summary` and the final values of `probes` (EvaluateProbe on `state` with
-/// summary.energy) to `path` as JSON, indented by 2:
+/// summary.energy and `contacts`, the active contacts at `state`) to `path` as JSON, indented by 2:
 /// `{"status": "completed"|"failed", "message", "analysis", "time", "steps", "newton_iterations",
 /// "jacobian_updates", "step_cuts", "wall_time_s", "output_time_s", "energy": {"kinetic", "strain",
 /// "gravity", "work", "dissipated", "balance"}, "failures": [{"time", "what", "tension"}],
 /// "probes": {NAME: {"position": [x, y, z]} |
-/// {"velocity": [vx, vy, vz]} | {"energy": {"kinetic", …}}}}`. Units as in the CSV (s, m, m/s,
+/// {"velocity": [vx, vy, vz]} | {"energy": {"kinetic", …}} | {"contact": {"active",
+/// "normal_force", "friction_force", "force": [fx, fy, fz], "moment": [mx, my, mz],
+/// "max_penetration"}} | …}}`. Units as in the CSV (s, m, m/s,
 /// J). Non-finite numbers are written as null. Throws InputError "cannot write PATH" on failure.
 void WriteSummaryJson(const std::filesystem::path& path, const RunSummary& summary,
-                      const std::vector<Probe>& probes, const Model& model, const State& state);
+                      const std::vector<Probe>& probes, const Model& model, const State& state,
+                      const std::vector<ContactPoint>& contacts);
 
 }  // namespace ancfnet

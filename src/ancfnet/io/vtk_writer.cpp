@@ -3,9 +3,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
-#include <cstdio>
 #include <iterator>
-#include <system_error>
 
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/elements/ancf_cable.hpp"
@@ -15,57 +13,24 @@
 namespace ancfnet {
 namespace {
 
-// Writes `text` to `path` (truncating it); throws InputError on any failure.
-void WriteTextFile(const std::filesystem::path& path, const std::string& text) {
-  std::FILE* file = std::fopen(path.c_str(), "w");
-  if (file == nullptr) throw InputError(fmt::format("cannot write {}", path.string()));
-  const bool written = std::fwrite(text.data(), 1, text.size(), file) == text.size();
-  if (std::fclose(file) != 0 || !written)
-    throw InputError(fmt::format("cannot write {}", path.string()));
-}
-
-// Appends `<DataArray …>` with the values given by `value(sample, out)` for every sample.
-template <typename Samples, typename Writer>
-void AppendDataArray(std::string* out, const char* name, int components, const Samples& samples,
-                     Writer write_value) {
-  auto it = std::back_inserter(*out);
-  fmt::format_to(it,
-                 "        <DataArray type=\"Float64\" Name=\"{}\" NumberOfComponents=\"{}\" "
-                 "format=\"ascii\">\n",
-                 name, components);
-  for (const auto& sample : samples) {
-    *out += "          ";
-    write_value(sample, it);
-    *out += '\n';
-  }
-  *out += "        </DataArray>\n";
+int CheckedPointsPerElement(int points_per_element) {
+  if (points_per_element < 1)
+    throw InputError(
+        fmt::format("VTK points per element must be at least 1 (got {})", points_per_element));
+  return points_per_element;
 }
 
 }  // namespace
 
 VtkSeriesWriter::VtkSeriesWriter(const std::filesystem::path& directory,
                                  const std::string& base_name, int points_per_element)
-    : directory_(directory), base_name_(base_name), points_per_element_(points_per_element) {
-  if (points_per_element < 1)
-    throw InputError(
-        fmt::format("VTK points per element must be at least 1 (got {})", points_per_element));
-  std::error_code error;
-  std::filesystem::create_directories(directory_, error);
-  if (error || !std::filesystem::is_directory(directory_))
-    throw InputError(fmt::format("cannot create directory {}", directory_.string()));
-}
-
-std::filesystem::path VtkSeriesWriter::FramePath(int index) const {
-  return directory_ / fmt::format("{}_{:06d}.vtp", base_name_, index);
-}
+    : points_per_element_(CheckedPointsPerElement(points_per_element)),
+      collection_(directory, base_name) {}
 
 void VtkSeriesWriter::WriteFrame(const Model& model, const State& state) {
   CollectSamples(model, state);
   CheckSamplesFinite(state.t);
-  const std::filesystem::path path = FramePath(num_frames());
-  WriteTextFile(path, FormatPolyData(model));
-  frames_.push_back({state.t, path.filename().string()});
-  WriteCollection();
+  collection_.AddFrame(state.t, FormatPolyData(model));
 }
 
 void VtkSeriesWriter::CollectSamples(const Model& model, const State& state) {
@@ -139,17 +104,17 @@ std::string VtkSeriesWriter::FormatPolyData(const Model& model) const {
                  samples_.size(), model.cables().size() + 3 * model.rigid_bodies().size());
 
   out += "      <PointData Scalars=\"tension\" Vectors=\"velocity\">\n";
-  AppendDataArray(&out, "velocity", 3, samples_,
-                  [&](const Sample& s, auto o) { write_vector(s.velocity, o); });
-  AppendDataArray(&out, "axial_strain", 1, samples_,
-                  [](const Sample& s, auto o) { fmt::format_to(o, "{}", s.axial_strain); });
-  AppendDataArray(&out, "curvature", 1, samples_,
-                  [](const Sample& s, auto o) { fmt::format_to(o, "{}", s.curvature); });
-  AppendDataArray(&out, "tension", 1, samples_,
-                  [](const Sample& s, auto o) { fmt::format_to(o, "{}", s.tension); });
+  AppendVtkDataArray(&out, "velocity", 3, samples_,
+                     [&](const Sample& s, auto o) { write_vector(s.velocity, o); });
+  AppendVtkDataArray(&out, "axial_strain", 1, samples_,
+                     [](const Sample& s, auto o) { fmt::format_to(o, "{}", s.axial_strain); });
+  AppendVtkDataArray(&out, "curvature", 1, samples_,
+                     [](const Sample& s, auto o) { fmt::format_to(o, "{}", s.curvature); });
+  AppendVtkDataArray(&out, "tension", 1, samples_,
+                     [](const Sample& s, auto o) { fmt::format_to(o, "{}", s.tension); });
   out += "      </PointData>\n      <Points>\n";
-  AppendDataArray(&out, "position", 3, samples_,
-                  [&](const Sample& s, auto o) { write_vector(s.position, o); });
+  AppendVtkDataArray(&out, "position", 3, samples_,
+                     [&](const Sample& s, auto o) { write_vector(s.position, o); });
   out += "      </Points>\n      <Lines>\n";
 
   // One polyline per cable over consecutive point indices.
@@ -179,27 +144,6 @@ std::string VtkSeriesWriter::FormatPolyData(const Model& model) const {
       "  </PolyData>\n"
       "</VTKFile>\n";
   return out;
-}
-
-void VtkSeriesWriter::WriteCollection() const {
-  std::string out =
-      "<?xml version=\"1.0\"?>\n"
-      "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-      "  <Collection>\n";
-  for (const Frame& frame : frames_) {
-    fmt::format_to(std::back_inserter(out),
-                   "    <DataSet timestep=\"{}\" group=\"\" part=\"0\" file=\"{}\"/>\n", frame.time,
-                   frame.file_name);
-  }
-  out += "  </Collection>\n</VTKFile>\n";
-  // Write beside the collection and rename, so a reader never sees a half-written file.
-  const std::filesystem::path path = collection_path();
-  std::filesystem::path temporary = path;
-  temporary += ".tmp";
-  WriteTextFile(temporary, out);
-  std::error_code error;
-  std::filesystem::rename(temporary, path, error);
-  if (error) throw InputError(fmt::format("cannot write {}", path.string()));
 }
 
 }  // namespace ancfnet

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "ancfnet/io/vtk_collection.hpp"
 #include "ancfnet/model/model.hpp"
 #include "ancfnet/state/state.hpp"
 
@@ -37,11 +38,11 @@ class VtkSeriesWriter {
   void WriteFrame(const Model& model, const State& state);
 
   /// Number of frames written so far.
-  int num_frames() const { return static_cast<int>(frames_.size()); }
+  int num_frames() const { return collection_.num_frames(); }
   /// The .pvd collection file.
-  std::filesystem::path collection_path() const { return directory_ / (base_name_ + ".pvd"); }
+  std::filesystem::path collection_path() const { return collection_.collection_path(); }
   /// The .vtp file of frame `index` (written or not).
-  std::filesystem::path FramePath(int index) const;
+  std::filesystem::path FramePath(int index) const { return collection_.FramePath(index); }
 
  private:
   // Values at one sample point of the centre line.
@@ -52,23 +53,15 @@ class VtkSeriesWriter {
     double curvature;
     double tension;
   };
-  struct Frame {
-    double time;
-    std::string file_name;
-  };
-
   void CollectSamples(const Model& model, const State& state);
   // Throws SolverError at `time` for the first non-finite value in samples_.
   void CheckSamplesFinite(double time) const;
   std::string FormatPolyData(const Model& model) const;
-  void WriteCollection() const;
 
-  std::filesystem::path directory_;
-  std::string base_name_;
   int points_per_element_;
+  VtkCollection collection_;
   std::vector<Sample> samples_;  // all cables, cable after cable, then the bodies' frames
   std::size_t num_cable_samples_ = 0;
-  std::vector<Frame> frames_;
 };
 
 }  // namespace ancfnet

@@ -8,6 +8,8 @@
 #include <utility>
 
 #include "ancfnet/common/error.hpp"
+#include "ancfnet/forces/target_contact.hpp"
+#include "ancfnet/io/contact_vtk_writer.hpp"
 #include "ancfnet/io/output_directory.hpp"
 #include "ancfnet/io/probe_csv_writer.hpp"
 #include "ancfnet/io/vtk_writer.hpp"
@@ -22,20 +24,30 @@ namespace {
 class OutputWriters {
  public:
   OutputWriters(const Scene& scene, const std::filesystem::path& dir)
-      : scene_(scene), csv_(dir / "probes.csv", scene.probes) {
+      : scene_(scene), contact_(scene.model), csv_(dir / "probes.csv", scene.probes) {
     if (scene.output.write_vtk)
       vtk_ = std::make_unique<VtkSeriesWriter>(dir, "cables", scene.output.vtk_points_per_element);
+    if (scene.output.write_vtk && scene.model.contact().enabled())
+      contact_vtk_ = std::make_unique<ContactVtkWriter>(dir, "contacts");
   }
   // Writes nothing and throws SolverError when a value to be written is NaN or infinite, so
   // that the files only ever hold finite numbers. The VTK frame goes first: it checks the whole
   // centre line, from which the probe values are interpolated, before writing anything.
   void Write(const State& state, const EnergyAccount& energy) {
     CheckFinite(state, energy);
+    const std::vector<ContactPoint>& contacts = CollectContacts(state);
     if (vtk_) vtk_->WriteFrame(scene_.model, state);
-    csv_.Append(scene_.model, state, energy);
+    if (contact_vtk_) contact_vtk_->WriteFrame(state.t, contacts);
+    csv_.Append(scene_.model, state, energy, contacts);
     last_energy_ = energy;
   }
   const EnergyAccount& last_energy() const { return last_energy_; }
+  // The active contacts with the rigid targets at `state`, in a buffer reused between outputs.
+  const std::vector<ContactPoint>& CollectContacts(const State& state) {
+    contacts_.clear();
+    contact_.CollectContacts(state.q, state.v, state.contact_history, &contacts_);
+    return contacts_;
+  }
 
  private:
   static void CheckFinite(const State& state, const EnergyAccount& energy) {
@@ -52,8 +64,11 @@ class OutputWriters {
   }
 
   const Scene& scene_;
+  TargetContact contact_;
+  std::vector<ContactPoint> contacts_;
   ProbeCsvWriter csv_;
   std::unique_ptr<VtkSeriesWriter> vtk_;
+  std::unique_ptr<ContactVtkWriter> contact_vtk_;
   EnergyAccount last_energy_;
 };
 
@@ -102,7 +117,7 @@ RunSummary RunScene(const Scene& scene, const RunOptions& options) {
   summary.failures = result.failures;
   // Final values are those of the last state written, which is always finite.
   WriteSummaryJson(options.output_dir / "summary.json", summary, scene.probes, scene.model,
-                   last_written);
+                   last_written, writers.CollectContacts(last_written));
   return summary;
 }
 

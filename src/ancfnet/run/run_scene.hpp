@@ -17,7 +17,8 @@ struct RunOptions {
 };
 
 /// Runs the analysis and writes into options.output_dir: probes.csv (one row per output step),
-/// cables_NNNNNN.vtp frames with cables.pvd, and summary.json. A solver failure does not throw:
+/// cables_NNNNNN.vtp frames with cables.pvd, with contact targets contacts_NNNNNN.vtp frames (the
+/// active contact points) with contacts.pvd, and summary.json. A solver failure does not throw:
 /// the outputs written so far are kept, summary.json says "failed" with the time and the reason,
 /// and the returned summary has completed == false. Throws InputError when the directory cannot
 /// be written.

@@ -43,7 +43,7 @@ TEST(NetProbe, MaxTensionFindsTheStretchedThread) {
   probe.net = 0;
   EXPECT_EQ(ProbeColumns(probe), (std::vector<std::string>{"pull.tension", "pull.thread"}));
   std::vector<double> values;
-  EvaluateProbe(probe, model, state, {}, &values);
+  EvaluateProbe(probe, model, state, {}, {}, &values);
   EXPECT_EQ(values, (std::vector<double>{t.tension, 1.0}));
 }
 
@@ -63,7 +63,7 @@ TEST(NetProbe, CentroidVelocityIsTheMeanKnotVelocity) {
   probe.net = 0;
   EXPECT_EQ(ProbeColumns(probe), (std::vector<std::string>{"c.vx", "c.vy", "c.vz"}));
   std::vector<double> values;
-  EvaluateProbe(probe, model, MakeInitialState(model), {}, &values);
+  EvaluateProbe(probe, model, MakeInitialState(model), {}, {}, &values);
   EXPECT_EQ(values, (std::vector<double>{2.0, 1.0, 1.0}));
 }
 

@@ -1,8 +1,8 @@
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
-#include <fmt/format.h>
 #include <fstream>
 #include <limits>
 #include <nlohmann/json.hpp>
@@ -50,17 +50,18 @@ EnergyAccount MakeEnergy() {
 }
 
 std::vector<Probe> MakeProbes(const Model& model) {
-  return {{"tip", ProbeQuantity::kPosition, model.LocateMaterialPoint(model.LocateCablePoint(0, 1.0))},
-          {"mid", ProbeQuantity::kVelocity, model.LocateMaterialPoint(model.LocateCablePoint(1, 0.3))},
-          {"e", ProbeQuantity::kEnergy, {}}};
+  return {
+      {"tip", ProbeQuantity::kPosition, model.LocateMaterialPoint(model.LocateCablePoint(0, 1.0))},
+      {"mid", ProbeQuantity::kVelocity, model.LocateMaterialPoint(model.LocateCablePoint(1, 0.3))},
+      {"e", ProbeQuantity::kEnergy, {}}};
 }
 
 // An empty directory of its own for the running test.
 std::filesystem::path MakeTestDirectory() {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const std::filesystem::path dir = std::filesystem::path(::testing::TempDir()) /
-                                    fmt::format("ancfnet_{}_{}", info->test_suite_name(),
-                                                info->name());
+  const std::filesystem::path dir =
+      std::filesystem::path(::testing::TempDir()) /
+      fmt::format("ancfnet_{}_{}", info->test_suite_name(), info->name());
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
@@ -96,8 +97,8 @@ TEST(ProbeCsvWriter, WritesHeaderAndFullPrecisionRows) {
   const EnergyAccount energy = MakeEnergy();
   {
     ProbeCsvWriter writer(path, probes);
-    writer.Append(model, state0, energy);
-    writer.Append(model, state1, energy);
+    writer.Append(model, state0, energy, {});
+    writer.Append(model, state1, energy, {});
   }
   const std::vector<std::string> lines = SplitLines(ReadFile(path));
   ASSERT_EQ(lines.size(), 3u);
@@ -123,12 +124,12 @@ TEST(ProbeCsvWriter, RefusesNonFiniteValuesWithoutWritingTheRow) {
   const std::vector<Probe> probes = MakeProbes(model);
   const std::filesystem::path path = MakeTestDirectory() / "probes.csv";
   ProbeCsvWriter writer(path, probes);
-  writer.Append(model, MakeDeformedState(model, 0.0), MakeEnergy());
+  writer.Append(model, MakeDeformedState(model, 0.0), MakeEnergy(), {});
 
   State bad = MakeDeformedState(model, 0.25);
   bad.q[model.NodePositionDof(model.LocateCableNode(0, 1.0)) + 1] = kNaN;  // tip.y
   try {
-    writer.Append(model, bad, MakeEnergy());
+    writer.Append(model, bad, MakeEnergy(), {});
     FAIL() << "no SolverError";
   } catch (const SolverError& error) {
     EXPECT_STREQ(error.what(), "non-finite value in probe column tip.y");
@@ -136,7 +137,7 @@ TEST(ProbeCsvWriter, RefusesNonFiniteValuesWithoutWritingTheRow) {
   }
   EnergyAccount infinite = MakeEnergy();
   infinite.work = std::numeric_limits<double>::infinity();
-  EXPECT_THROW(writer.Append(model, MakeDeformedState(model, 0.5), infinite), SolverError);
+  EXPECT_THROW(writer.Append(model, MakeDeformedState(model, 0.5), infinite, {}), SolverError);
 
   EXPECT_EQ(SplitLines(ReadFile(path)).size(), 2u);  // header and the first row only
 }
@@ -325,7 +326,7 @@ TEST(SummaryWriter, WritesCountersEnergiesAndFinalProbeValues) {
   const State state = MakeDeformedState(model, 1.5);
   const RunSummary summary = MakeSummary();
   const std::filesystem::path path = MakeTestDirectory() / "summary.json";
-  WriteSummaryJson(path, summary, probes, model, state);
+  WriteSummaryJson(path, summary, probes, model, state, {});
 
   const std::string text = ReadFile(path);
   EXPECT_NE(text.find("\n  \"status\": \"completed\""), std::string::npos) << "indent 2";
@@ -371,7 +372,7 @@ TEST(SummaryWriter, FailedRunWritesNullForNonFiniteNumbers) {
   summary.message = "Newton did not converge at t = 0.3 s";
   summary.energy.kinetic = std::numeric_limits<double>::infinity();
   const std::filesystem::path path = MakeTestDirectory() / "summary.json";
-  WriteSummaryJson(path, summary, MakeProbes(model), model, state);
+  WriteSummaryJson(path, summary, MakeProbes(model), model, state, {});
 
   const std::string text = ReadFile(path);
   EXPECT_EQ(text.find("nan"), std::string::npos);
@@ -389,8 +390,8 @@ TEST(SummaryWriter, FailedRunWritesNullForNonFiniteNumbers) {
 
 TEST(SummaryWriter, UnwritablePathIsAnInputError) {
   const Model model = MakeModel();
-  EXPECT_THROW(WriteSummaryJson(MakeTestDirectory() / "missing" / "summary.json", MakeSummary(),
-                                {}, model, MakeInitialState(model)),
+  EXPECT_THROW(WriteSummaryJson(MakeTestDirectory() / "missing" / "summary.json", MakeSummary(), {},
+                                model, MakeInitialState(model), {}),
                InputError);
 }
 

@@ -108,7 +108,7 @@ probes:
   EXPECT_TRUE(v0.isApprox(10.0 * Vector3d(-1.0, -1.0, 0.0).normalized()));  // knot 0 at (−1, −1)
   EXPECT_DOUBLE_EQ(model.point_masses()[0].mass, 0.101);
   std::vector<double> values;
-  EvaluateProbe(scene.probes[0], model, MakeInitialState(model), {}, &values);
+  EvaluateProbe(scene.probes[0], model, MakeInitialState(model), {}, {}, &values);
   EXPECT_NEAR(values[0], 1.0, 1e-12);  // 2 m × 2 m packed by 0.5 in both directions
   EXPECT_EQ(ProbeColumns(scene.probes[1]), std::vector<std::string>{"travel.distance"});
 }
@@ -169,12 +169,12 @@ TEST(PointMassScene, ReadsBreakingForcesAndLinkProbes) {
   State state = MakeInitialState(scene.model);
   state.v.setZero();
   std::vector<double> values;
-  EvaluateProbe(scene.probes[1], scene.model, state, {}, &values);
+  EvaluateProbe(scene.probes[1], scene.model, state, {}, {}, &values);
   EXPECT_NEAR(values[0], 2.0, 1e-12);
   EXPECT_NEAR(values[1], -2.0, 1e-12);
   state.link_broken[0] = 1;  // a broken link carries nothing
   values.clear();
-  EvaluateProbe(scene.probes[1], scene.model, state, {}, &values);
+  EvaluateProbe(scene.probes[1], scene.model, state, {}, {}, &values);
   EXPECT_EQ(values, (std::vector<double>{0.0, 0.0, 0.0, 0.0}));
 }
 
