@@ -216,9 +216,10 @@ std::string SelfContact::CheckStep(const VectorXd& q) const {
       return fmt::format("self-contact: {} and {} passed through each other", name(a), name(b));
     const double allowed = kMaxPenetrationRatio * 0.5 * (a.radius + b.radius);
     if (pair.counted && -pair.gap > allowed)
-      return fmt::format("self-contact: {} and {} overlap by {:.3g} m, more than {:.3g} m (a "
-                         "step too long for the impact, or a contact law too soft)",
-                         name(a), name(b), -pair.gap, allowed);
+      return fmt::format(
+          "self-contact: {} and {} overlap by {:.3g} m, more than {:.3g} m (a "
+          "step too long for the impact, or a contact law too soft)",
+          name(a), name(b), -pair.gap, allowed);
   }
   return {};
 }
@@ -238,6 +239,28 @@ void SelfContact::UpdateHistory(const VectorXd& q, const VectorXd& v,
       value = std::max(std::max(-value, closing), min_speed);
     }
     history->push_back({c.a, c.b, value});
+  }
+}
+
+void SelfContact::CollectContacts(const VectorXd& q, const VectorXd& v,
+                                  std::vector<ContactPoint>* out) const {
+  for (const Candidate& c : candidates_) {
+    const PairState pair = CalcPair(c, q, v, PairDetail::kForce);
+    if (!pair.force.touching) continue;
+    const SelfContactPrimitive& a = primitives_[c.a];
+    const SelfContactPrimitive& b = primitives_[c.b];
+    const Axis axis_b = Locate(b, q, v);
+    ContactPoint p;
+    p.point_W = (1.0 - pair.t) * axis_b.x0 + pair.t * axis_b.x1 + b.radius * pair.direction;
+    p.normal_W = pair.direction;
+    p.penetration = pair.force.penetration;
+    p.normal_force = pair.force.normal_force;
+    p.friction_force_W = pair.force.friction;
+    p.force_W = pair.force.force;
+    p.element = a.element;
+    p.point_mass = a.point_mass;
+    p.xi = a.xi0 + pair.s * (a.xi1 - a.xi0);
+    out->push_back(p);
   }
 }
 

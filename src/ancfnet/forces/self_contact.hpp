@@ -14,6 +14,7 @@
 #include "ancfnet/assembly/forces.hpp"
 #include "ancfnet/contact/broad_phase/uniform_grid.hpp"
 #include "ancfnet/contact/contact_pair_force.hpp"
+#include "ancfnet/contact/contact_point.hpp"
 #include "ancfnet/contact/distance/segment_segment.hpp"
 #include "ancfnet/contact/self_contact_primitives.hpp"
 #include "ancfnet/model/model.hpp"
@@ -54,6 +55,10 @@ class SelfContact {
   void UpdateHistory(const VectorXd& q, const VectorXd& v,
                      std::vector<SelfContactPairHistory>* history) const;
 
+  /// Appends a record of every touching candidate pair at (q, v) (after FindCandidates at that
+  /// state): the force on primitive a at its material coordinate, the point on b's surface,
+  /// target −1.
+  void CollectContacts(const VectorXd& q, const VectorXd& v, std::vector<ContactPoint>* out) const;
   /// Touching pairs, total normal force (N) and largest penetration (m) at (q, v).
   struct Summary {
     int active = 0;

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "ancfnet/common/error.hpp"
+#include "ancfnet/forces/self_contact.hpp"
 #include "ancfnet/forces/target_contact.hpp"
 #include "ancfnet/io/contact_vtk_writer.hpp"
 #include "ancfnet/io/output_directory.hpp"
@@ -24,7 +25,10 @@ namespace {
 class OutputWriters {
  public:
   OutputWriters(const Scene& scene, const std::filesystem::path& dir)
-      : scene_(scene), contact_(scene.model), csv_(dir / "probes.csv", scene.probes) {
+      : scene_(scene),
+        contact_(scene.model),
+        self_contact_(scene.model),
+        csv_(dir / "probes.csv", scene.probes) {
     if (scene.output.write_vtk)
       vtk_ = std::make_unique<VtkSeriesWriter>(dir, "cables", scene.output.vtk_points_per_element);
     if (scene.output.write_vtk && scene.model.contact().enabled())
@@ -42,10 +46,15 @@ class OutputWriters {
     last_energy_ = energy;
   }
   const EnergyAccount& last_energy() const { return last_energy_; }
-  // The active contacts with the rigid targets at `state`, in a buffer reused between outputs.
+  // The active contacts with the rigid targets and between threads and knots at `state`, in a
+  // buffer reused between outputs.
   const std::vector<ContactPoint>& CollectContacts(const State& state) {
     contacts_.clear();
     contact_.CollectContacts(state.q, state.v, state.contact_history, &contacts_);
+    if (!self_contact_.empty()) {
+      self_contact_.FindCandidates(state, 0.0);
+      self_contact_.CollectContacts(state.q, state.v, &contacts_);
+    }
     return contacts_;
   }
 
@@ -65,6 +74,7 @@ class OutputWriters {
 
   const Scene& scene_;
   TargetContact contact_;
+  SelfContact self_contact_;
   std::vector<ContactPoint> contacts_;
   ProbeCsvWriter csv_;
   std::unique_ptr<VtkSeriesWriter> vtk_;

@@ -78,8 +78,8 @@ TEST(RigidBodyScene, ReadsBodiesAttachmentsAndProbes) {
   EXPECT_EQ(ProbeColumns(scene.probes[0])[3], "pose.qw");
   const State state = MakeInitialState(model);
   std::vector<double> values;
-  EvaluateProbe(scene.probes[0], model, state, {}, &values);
-  EvaluateProbe(scene.probes[1], model, state, {}, &values);
+  EvaluateProbe(scene.probes[0], model, state, {}, {}, &values);
+  EvaluateProbe(scene.probes[1], model, state, {}, {}, &values);
   ASSERT_EQ(values.size(), 13u);
   EXPECT_NEAR(values[3], std::cos(0.25 * 3.141592653589793), 1e-12);  // qw of 90° about z
   EXPECT_NEAR(values[6], std::sin(0.25 * 3.141592653589793), 1e-12);  // qz
