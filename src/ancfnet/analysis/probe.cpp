@@ -152,8 +152,12 @@ void EvaluateProbe(const Probe& probe, const Model& model, const State& state,
       break;
     }
     case ProbeQuantity::kContact: {
-      const Vector3d reference =
-          probe.target >= 0 ? model.contact().targets[probe.target].point : Vector3d::Zero();
+      // The moment is taken about the target's reference point, or its body's origin.
+      Vector3d reference = Vector3d::Zero();
+      if (probe.target >= 0) {
+        const ContactTarget& target = model.contact().targets[probe.target];
+        reference = target.body >= 0 ? CalcBodyPose(model, state, target.body).p_WB : target.point;
+      }
       const ContactProbeValues c = CalcContactProbeValues(contacts, probe.target, reference);
       const Vector3d& f = c.force_on_target;
       const Vector3d& m = c.moment_on_target;

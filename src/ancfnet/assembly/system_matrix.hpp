@@ -35,10 +35,12 @@ class SystemMatrix {
   /// blocks numbered first point's then second point's.
   void AddLinkBlock(Index link, int i, int j, const Matrix3d& block, double scale = 1.0);
   /// Owners of contact couplings: element e is owner e, point mass m is owner
-  /// num_elements + m. Adds a coupling group for every pair of owners (a, b) not yet coupled
+  /// num_elements + m, rigid body b is BodyOwner(b). Adds a coupling group for every pair of owners (a, b) not yet coupled
   /// (a = b is allowed) and rebuilds the pattern; returns true when it changed, which makes any
   /// factorisation of the old pattern invalid. Couplings are never removed.
   bool AddContactCouplings(const std::vector<std::pair<Index, Index>>& owners);
+  /// The owner of rigid body b's blocks (x, ψ) in contact couplings.
+  Index BodyOwner(Index b) const { return num_elements_ + num_point_masses_ + num_links_ + b; }
   /// Index of the coupling of owners (a, b) with a ≤ b, or −1. Its blocks are a's then b's.
   int FindContactCoupling(Index a, Index b) const;
   /// Adds scale · block to the 3×3 block (row block i, column block j) of contact coupling c.

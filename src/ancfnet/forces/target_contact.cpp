@@ -95,7 +95,24 @@ Index CountContactPairs(const Model& model) {
 }
 
 TargetContact::TargetContact(const Model& model)
-    : model_(model), probes_(MakeContactProbes(model)) {}
+    : model_(model), probes_(MakeContactProbes(model)), frames_(model.contact().targets.size()) {}
+
+TargetContact::Frame TargetContact::CalcFrame(const ContactTarget& target, const VectorXd& q,
+                                              const VectorXd& v) const {
+  Frame frame;
+  if (target.body < 0) return frame;
+  const RigidBody& body = model_.rigid_bodies()[target.body];
+  frame.body = target.body;
+  frame.pose = CalcBodyPose(
+      body, q, body_rotation_ ? (*body_rotation_)[target.body] : body.initial_orientation);
+  frame.velocity = CalcBodyVelocity(body, v);
+  return frame;
+}
+
+Index TargetContact::ProbeOwner(const ContactProbe& probe) const {
+  return probe.element >= 0 ? probe.element
+                            : static_cast<Index>(model_.elements().size()) + probe.point_mass;
+}
 
 void TargetContact::Locate(const ContactProbe& probe, const VectorXd& q, const VectorXd& v,
                            Vector3d* x, Vector3d* x_dot) const {
@@ -115,24 +132,69 @@ void TargetContact::Locate(const ContactProbe& probe, const VectorXd& q, const V
   }
 }
 
+ContactKinematics TargetContact::CalcKinematics(const ContactTarget& target, const Frame& frame,
+                                                const ContactProbe& probe, const Vector3d& x,
+                                                const Vector3d& x_dot) const {
+  ContactKinematics k;
+  k.velocity = x_dot;
+  Gap gap;
+  if (frame.body < 0) {
+    gap = CalcGap(target, x);
+  } else {
+    // In the body's frame: x_B = R_WBᵀ (x − x_WB); n = R_WB n_B, ∂n/∂x = R_WB H_B R_WBᵀ; the
+    // surface point s moves with the body at ẋ_WB + R_WB (ω_B × R_WBᵀ (s − x_WB)).
+    const Matrix3d& R = frame.pose.R_WB;
+    const Gap local = CalcGap(target, R.transpose() * (x - frame.pose.p_WB));
+    gap.distance = local.distance;
+    gap.normal = R * local.normal;
+    gap.hessian = R * local.hessian * R.transpose();
+    const Vector3d s = x - gap.distance * gap.normal;
+    k.velocity -=
+        frame.velocity.v_WB + R * frame.velocity.w_B.cross(R.transpose() * (s - frame.pose.p_WB));
+  }
+  k.penetration = probe.radius - gap.distance;
+  k.normal = gap.normal;
+  k.normal_derivative = gap.hessian;
+  return k;
+}
+
 TargetContact::PairForce TargetContact::CalcPairForce(const ContactTarget& target,
-                                              const ContactProbe& probe, const Vector3d& x,
-                                              const Vector3d& x_dot, double approach_speed,
-                                              bool with_jacobian) const {
-  const Gap gap = CalcGap(target, x);
+                                                      const Frame& frame, const ContactProbe& probe,
+                                                      const Vector3d& x, const Vector3d& x_dot,
+                                                      double approach_speed,
+                                                      bool with_jacobian) const {
+  const ContactKinematics kinematics = CalcKinematics(target, frame, probe, x, x_dot);
   // history > 0: the impact speed frozen at first touch; ≤ 0: apart at the last accepted
   // state, closing at −history (a constant through this step's Newton iterations).
-  const ContactKinematics kinematics{.penetration = probe.radius - gap.distance,
-                                     .normal = gap.normal,
-                                     .normal_derivative = gap.hessian,
-                                     .velocity = x_dot};
   const ContactSpec& spec = model_.contact();
   PairForce r;
   static_cast<ContactPairForce&>(r) =
       CalcContactPairForce(spec.normal, spec.friction, kinematics, approach_speed, with_jacobian);
-  r.surface_point = x - gap.distance * gap.normal;
-  r.normal = gap.normal;
+  r.surface_point = x - (probe.radius - kinematics.penetration) * kinematics.normal;
+  r.normal = kinematics.normal;
   return r;
+}
+
+void TargetContact::FindBodyCouplings(const VectorXd& q, const VectorXd& v, double h,
+                                      const SystemMatrix& matrix,
+                                      std::vector<std::pair<Index, Index>>* owners) const {
+  owners->clear();
+  const auto& targets = model_.contact().targets;
+  for (std::size_t t = 0; t < targets.size(); ++t) {
+    if (targets[t].body < 0) continue;
+    const Frame frame = CalcFrame(targets[t], q, v);
+    const Index body_owner = matrix.BodyOwner(frame.body);
+    for (const ContactProbe& probe : probes_) {
+      Vector3d x, x_dot;
+      Locate(probe, q, v, &x, &x_dot);
+      const Matrix3d& R = frame.pose.R_WB;
+      const Gap gap = CalcGap(targets[t], R.transpose() * (x - frame.pose.p_WB));
+      const Vector3d body_velocity =
+          frame.velocity.v_WB + R * frame.velocity.w_B.cross(R.transpose() * (x - frame.pose.p_WB));
+      if (gap.distance < 1.5 * probe.radius + 2.0 * h * (x_dot - body_velocity).norm())
+        owners->emplace_back(ProbeOwner(probe), body_owner);
+    }
+  }
 }
 
 template <class Visit>
@@ -140,12 +202,13 @@ void TargetContact::ForEachTouchingPair(const VectorXd& q, const VectorXd& v,
                                         const std::vector<double>& history, bool with_jacobian,
                                         Visit&& visit) const {
   const auto& targets = model_.contact().targets;
+  for (std::size_t t = 0; t < targets.size(); ++t) frames_[t] = CalcFrame(targets[t], q, v);
   for (std::size_t p = 0; p < probes_.size(); ++p) {
     Vector3d x, x_dot;
     Locate(probes_[p], q, v, &x, &x_dot);
     for (std::size_t t = 0; t < targets.size(); ++t) {
-      PairForce f = CalcPairForce(targets[t], probes_[p], x, x_dot, history[p * targets.size() + t],
-                                  with_jacobian);
+      PairForce f = CalcPairForce(targets[t], frames_[t], probes_[p], x, x_dot,
+                                  history[p * targets.size() + t], with_jacobian);
       if (!f.touching) continue;
       f.target = static_cast<Index>(t);
       visit(probes_[p], f);
@@ -156,54 +219,83 @@ void TargetContact::ForEachTouchingPair(const VectorXd& q, const VectorXd& v,
 void TargetContact::AddForces(const VectorXd& q, const VectorXd& v,
                               const std::vector<double>& history, Workspace& ws) const {
   ws.contact_energy = 0.0;
-  ForEachTouchingPair(q, v, history, false,
-                      [&](const ContactProbe& probe, const ContactPairForce& f) {
-                        ws.contact_energy += f.energy;
-                        if (probe.element < 0) {
-                          const Index dof = model_.point_masses()[probe.point_mass].dof;
-                          ws.internal_force.segment<3>(dof) -= f.force;
-                          ws.viscous_force.segment<3>(dof) -= f.dissipative;
-                          return;
-                        }
-                        const CableElement& element = model_.elements()[probe.element];
-                        for (int k = 0; k < 4; ++k) {
-                          const Index dof = element.dofs[3 * k];
-                          ws.internal_force.segment<3>(dof) -= probe.shape[k] * f.force;
-                          ws.viscous_force.segment<3>(dof) -= probe.shape[k] * f.dissipative;
-                        }
-                      });
+  ForEachTouchingPair(q, v, history, false, [&](const ContactProbe& probe, const PairForce& f) {
+    ws.contact_energy += f.energy;
+    if (probe.element < 0) {
+      const Index dof = model_.point_masses()[probe.point_mass].dof;
+      ws.internal_force.segment<3>(dof) -= f.force;
+      ws.viscous_force.segment<3>(dof) -= f.dissipative;
+    } else {
+      const CableElement& element = model_.elements()[probe.element];
+      for (int k = 0; k < 4; ++k) {
+        const Index dof = element.dofs[3 * k];
+        ws.internal_force.segment<3>(dof) -= probe.shape[k] * f.force;
+        ws.viscous_force.segment<3>(dof) -= probe.shape[k] * f.dissipative;
+      }
+    }
+    const Frame& frame = frames_[f.target];
+    if (frame.body < 0) return;
+    // The body feels −f at the contact point: Q_body = Gᵀ (−f).
+    const RigidBody& body = model_.rigid_bodies()[frame.body];
+    const Matrix3x6d G = CalcPointVelocityMap(frame.pose, f.surface_point);
+    const Vector6d force = G.transpose() * f.force;
+    const Vector6d dissipative = G.transpose() * f.dissipative;
+    ws.internal_force.segment<3>(body.position_dof()) += force.head<3>();
+    ws.internal_force.segment<3>(body.rotation_dof()) += force.tail<3>();
+    ws.viscous_force.segment<3>(body.position_dof()) += dissipative.head<3>();
+    ws.viscous_force.segment<3>(body.rotation_dof()) += dissipative.tail<3>();
+  });
 }
 
 void TargetContact::AddJacobian(const VectorXd& q, const VectorXd& v,
                                 const std::vector<double>& history, const IterationWeights& weights,
                                 SystemMatrix* matrix) const {
-  ForEachTouchingPair(
-      q, v, history, true, [&](const ContactProbe& probe, const ContactPairForce& f) {
-        // Q = −Sᵀ f: ∂Q/∂e = −Sᵀ (∂f/∂x) S.
-        const Matrix3d block = -(weights.stiffness * f.dforce_dx + weights.damping * f.dforce_dv);
-        if (probe.element < 0) {
-          matrix->AddPointMassBlock(probe.point_mass, block);
-          return;
-        }
-        Matrix12d element_block;
-        for (int i = 0; i < 4; ++i)
-          for (int j = 0; j < 4; ++j)
-            element_block.block<3, 3>(3 * i, 3 * j) = probe.shape[i] * probe.shape[j] * block;
-        matrix->AddElementBlock(probe.element, element_block);
-      });
+  ForEachTouchingPair(q, v, history, true, [&](const ContactProbe& probe, const PairForce& f) {
+    // Q = −Sᵀ f(x − x_s): ∂Q/∂e = −Sᵀ (∂f/∂x) S, with B = −(c_K ∂f/∂x + c_C ∂f/∂ẋ).
+    const Matrix3d block = -(weights.stiffness * f.dforce_dx + weights.damping * f.dforce_dv);
+    const int num_blocks = probe.element < 0 ? 1 : 4;
+    auto weight = [&](int i) { return probe.element < 0 ? 1.0 : probe.shape[i]; };
+    if (probe.element < 0) {
+      matrix->AddPointMassBlock(probe.point_mass, block);
+    } else {
+      Matrix12d element_block;
+      for (int i = 0; i < 4; ++i)
+        for (int j = 0; j < 4; ++j)
+          element_block.block<3, 3>(3 * i, 3 * j) = probe.shape[i] * probe.shape[j] * block;
+      matrix->AddElementBlock(probe.element, element_block);
+    }
+    const Frame& frame = frames_[f.target];
+    if (frame.body < 0) return;
+    // The contact point moves with the body as G (ẋ_WB, ω_B): probe–body blocks −Wᵀ B G and
+    // −Gᵀ B W, body–body Gᵀ B G (G held fixed: its change with the rotation is left out).
+    const Matrix3x6d G = CalcPointVelocityMap(frame.pose, f.surface_point);
+    const Matrix3d g[2] = {G.leftCols<3>(), G.rightCols<3>()};
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2; ++j)
+        matrix->AddBodyBlock(frame.body, i, j, g[i].transpose() * block * g[j]);
+    const int coupling =
+        matrix->FindContactCoupling(ProbeOwner(probe), matrix->BodyOwner(frame.body));
+    if (coupling < 0) return;
+    for (int i = 0; i < num_blocks; ++i)
+      for (int j = 0; j < 2; ++j) {
+        matrix->AddContactBlock(coupling, i, num_blocks + j, block * g[j], -weight(i));
+        matrix->AddContactBlock(coupling, num_blocks + j, i, g[j].transpose() * block, -weight(i));
+      }
+  });
 }
 
 void TargetContact::UpdateHistory(const VectorXd& q, const VectorXd& v,
                                   std::vector<double>* history) const {
   const auto& targets = model_.contact().targets;
+  for (std::size_t t = 0; t < targets.size(); ++t) frames_[t] = CalcFrame(targets[t], q, v);
   for (std::size_t p = 0; p < probes_.size(); ++p) {
     Vector3d x, x_dot;
     Locate(probes_[p], q, v, &x, &x_dot);
     for (std::size_t t = 0; t < targets.size(); ++t) {
       double& stored = (*history)[p * targets.size() + t];
-      const Gap gap = CalcGap(targets[t], x);
-      const double closing = std::max(-gap.normal.dot(x_dot), 0.0);
-      if (!(probes_[p].radius - gap.distance > 0.0)) {
+      const ContactKinematics k = CalcKinematics(targets[t], frames_[t], probes_[p], x, x_dot);
+      const double closing = std::max(-k.normal.dot(k.velocity), 0.0);
+      if (!(k.penetration > 0.0)) {
         stored = -closing;  // apart: remember how fast it closes in
       } else if (stored <= 0.0) {
         // Just touched: its impact speed is the closing speed before the touch.

@@ -11,6 +11,7 @@
 #include "ancfnet/contact/contact_pair_force.hpp"
 #include "ancfnet/contact/contact_point.hpp"
 #include "ancfnet/model/model.hpp"
+#include "ancfnet/model/rigid_body_kinematics.hpp"
 #include "ancfnet/state/workspace.hpp"
 
 namespace ancfnet {
@@ -35,8 +36,19 @@ class TargetContact {
  public:
   explicit TargetContact(const Model& model);
   bool empty() const { return probes_.empty(); }
+  /// The bodies' reference rotations (State::body_rotation) that the poses of targets carried by
+  /// bodies are computed with, R_WB = R_ref exp(ψ̃); it must outlive the calls. Unset: the
+  /// bodies' initial orientations.
+  void SetBodyRotations(const std::vector<Matrix3d>* rotations) { body_rotation_ = rotations; }
+  /// Owner pairs (SystemMatrix::AddContactCouplings) of the probes within reach of a target
+  /// carried by a body during a step of size h from (q, v): gap < r + 2 h |ẋ_rel| + r/2. Their
+  /// Jacobian blocks that couple the probe and the body go into those couplings (a pair not
+  /// found gets its probe's block only).
+  void FindBodyCouplings(const VectorXd& q, const VectorXd& v, double h, const SystemMatrix& matrix,
+                         std::vector<std::pair<Index, Index>>* owners) const;
 
-  /// ws.internal_force −= Sᵀ f and ws.viscous_force −= Sᵀ f_dissipative for every touching pair;
+  /// ws.internal_force −= Sᵀ f and ws.viscous_force −= Sᵀ f_dissipative for every touching pair
+  /// (and += Gᵀ f on the body carrying the target, G its point-velocity map at the contact point);
   /// ws.contact_energy = Σ ∫ F_elastic dδ. `history` holds each pair's impact speed v₀ (> 0,
   /// frozen while it touches), or minus its closing speed while apart (≤ 0), which is the v₀ of
   /// a pair that touches during the step.
@@ -73,8 +85,22 @@ class TargetContact {
     Vector3d surface_point = Vector3d::Zero();  // closest point of the target's surface (m)
     Vector3d normal = Vector3d::UnitZ();        // outward normal of the target
   };
-  PairForce CalcPairForce(const ContactTarget& target, const ContactProbe& probe, const Vector3d& x,
-                          const Vector3d& x_dot, double approach_speed, bool with_jacobian) const;
+  // Where a target is: fixed, or moving with its body.
+  struct Frame {
+    Index body = -1;
+    BodyPose pose;
+    BodyVelocity velocity;
+  };
+  Frame CalcFrame(const ContactTarget& target, const VectorXd& q, const VectorXd& v) const;
+  // Penetration, normal, ∂n/∂x and the probe's velocity relative to the target's surface.
+  ContactKinematics CalcKinematics(const ContactTarget& target, const Frame& frame,
+                                   const ContactProbe& probe, const Vector3d& x,
+                                   const Vector3d& x_dot) const;
+  PairForce CalcPairForce(const ContactTarget& target, const Frame& frame,
+                          const ContactProbe& probe, const Vector3d& x, const Vector3d& x_dot,
+                          double approach_speed, bool with_jacobian) const;
+  // Owner of a probe's blocks in SystemMatrix contact couplings.
+  Index ProbeOwner(const ContactProbe& probe) const;
   void Locate(const ContactProbe& probe, const VectorXd& q, const VectorXd& v, Vector3d* x,
               Vector3d* x_dot) const;
   // Calls visit(probe, force) for every touching (probe, target) pair at (q, v); force.target is
@@ -85,6 +111,8 @@ class TargetContact {
 
   const Model& model_;
   std::vector<ContactProbe> probes_;
+  const std::vector<Matrix3d>* body_rotation_ = nullptr;
+  mutable std::vector<Frame> frames_;  // per target, at the (q, v) being evaluated
 };
 
 }  // namespace ancfnet

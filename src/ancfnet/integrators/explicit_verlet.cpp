@@ -16,7 +16,9 @@ ExplicitVerletIntegrator::ExplicitVerletIntegrator(const Model& model)
       contact_(model),
       self_contact_(model),
       ws_(model),
-      dofs_(DofMap::FreeCoordinates(model)) {}
+      dofs_(DofMap::FreeCoordinates(model)) {
+  contact_.SetBodyRotations(&ws_.body_rotation);
+}
 
 bool ExplicitVerletIntegrator::Initialize(State* state) {
   ws_.link_broken = state->link_broken;

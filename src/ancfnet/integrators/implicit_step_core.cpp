@@ -20,6 +20,7 @@ ImplicitStepCore::ImplicitStepCore(const Model& model, const DynamicSettings& se
   SystemMatrix mass(model, all);
   AssembleMassMatrix(model, ws_, &mass);
   mass_ = mass.matrix();
+  contact_.SetBodyRotations(&ws_.body_rotation);
 }
 
 bool ImplicitStepCore::Initialize(State* state) {
@@ -45,6 +46,10 @@ void ImplicitStepCore::BeginStep(double h, const State& state) {
     self_contact_.FindCandidates(state, h);
     if (iteration_matrix_.AddContactCouplings(self_contact_.candidate_owners()))
       newton_.InvalidatePattern();
+  }
+  if (!contact_.empty()) {
+    contact_.FindBodyCouplings(state.q, state.v, h, iteration_matrix_, &body_couplings_);
+    if (iteration_matrix_.AddContactCouplings(body_couplings_)) newton_.InvalidatePattern();
   }
 }
 

@@ -59,6 +59,7 @@ class ImplicitStepCore {
   DampingModel damping_;
   TargetContact contact_;
   SelfContact self_contact_;
+  std::vector<std::pair<Index, Index>> body_couplings_;  // probes near targets on bodies
   Workspace ws_;
   DofMap dofs_;
   SystemMatrix iteration_matrix_;

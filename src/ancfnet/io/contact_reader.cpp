@@ -97,9 +97,11 @@ ContactTarget ReadTarget(const YamlValue& value, const std::filesystem::path& sc
   const std::size_t type =
       map.Get("type").AsChoice({"plane", "sphere", "box", "cylinder", "capsule", "mesh"});
   t.name = map.Find("name") ? map.Get("name").AsString() : std::string("target");
+  // Carried by a rigid body: the geometry is in the body's frame.
+  if (auto body = map.Find("body")) t.body_name = body->AsString();
   switch (type) {
     case 0:
-      map.CheckKeys({"name", "type", "point", "normal"});
+      map.CheckKeys({"name", "type", "body", "point", "normal"});
       t.kind = ContactTarget::Kind::kPlane;
       t.point = map.Get("point").AsVector3();
       t.normal = map.Get("normal").AsVector3();
@@ -107,13 +109,13 @@ ContactTarget ReadTarget(const YamlValue& value, const std::filesystem::path& sc
       t.normal.normalize();
       break;
     case 1:
-      map.CheckKeys({"name", "type", "center", "radius"});
+      map.CheckKeys({"name", "type", "body", "center", "radius"});
       t.kind = ContactTarget::Kind::kSphere;
       t.point = map.Get("center").AsVector3();
       t.radius = map.Get("radius").AsPositive();
       break;
     case 2:
-      map.CheckKeys({"name", "type", "center", "half_extents"});
+      map.CheckKeys({"name", "type", "body", "center", "half_extents"});
       t.kind = ContactTarget::Kind::kBox;
       t.point = map.Get("center").AsVector3();
       t.half_extents = map.Get("half_extents").AsVector3();
@@ -121,7 +123,7 @@ ContactTarget ReadTarget(const YamlValue& value, const std::filesystem::path& sc
         map.Get("half_extents").Fail("half extents must be > 0");
       break;
     case 3:
-      map.CheckKeys({"name", "type", "center", "axis", "radius", "half_length"});
+      map.CheckKeys({"name", "type", "body", "center", "axis", "radius", "half_length"});
       t.kind = ContactTarget::Kind::kCylinder;
       t.point = map.Get("center").AsVector3();
       t.normal = ReadAxis(map);
@@ -129,7 +131,7 @@ ContactTarget ReadTarget(const YamlValue& value, const std::filesystem::path& sc
       t.half_length = map.Get("half_length").AsPositive();
       break;
     case 4:
-      map.CheckKeys({"name", "type", "center", "axis", "radius", "half_length"});
+      map.CheckKeys({"name", "type", "body", "center", "axis", "radius", "half_length"});
       t.kind = ContactTarget::Kind::kCapsule;
       t.point = map.Get("center").AsVector3();
       t.normal = ReadAxis(map);
@@ -137,7 +139,7 @@ ContactTarget ReadTarget(const YamlValue& value, const std::filesystem::path& sc
       t.half_length = map.Get("half_length").AsNonNegative();
       break;
     default:
-      map.CheckKeys({"name", "type", "file", "scale", "position", "rotation"});
+      map.CheckKeys({"name", "type", "body", "file", "scale", "position", "rotation"});
       t.kind = ContactTarget::Kind::kMesh;
       t.mesh = ReadMesh(map, scene_directory);
       break;

@@ -17,7 +17,8 @@
 
 namespace ancfnet {
 
-/// A rigid, fixed target.
+/// A rigid target: fixed in space, or carried by a rigid body (`body`), its geometry then given in
+/// the body's frame (origin x_WB, axes R_WB).
 struct ContactTarget {
   enum class Kind { kPlane, kSphere, kBox, kCylinder, kCapsule, kMesh };
   Kind kind = Kind::kPlane;
@@ -32,6 +33,10 @@ struct ContactTarget {
   /// mesh: the surface in world coordinates (scale and pose applied when loaded), shared by the
   /// copies of a Model.
   std::shared_ptr<const MeshBvh> mesh;
+  /// The rigid body carrying it (ModelBuilder::SetContact resolves the name; bodies must be
+  /// added first), or "" / −1: fixed in space.
+  std::string body_name;
+  Index body = -1;
 };
 
 struct ContactSpec {

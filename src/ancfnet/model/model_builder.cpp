@@ -140,6 +140,14 @@ void ModelBuilder::SetContact(const ContactSpec& contact) {
   }
   model_.contact_ = contact;
   for (ContactTarget& t : model_.contact_.targets)
+    if (!t.body_name.empty()) {
+      t.body = model_.FindRigidBody(t.body_name);
+      if (t.body < 0)
+        throw InputError(fmt::format("contact target '{}': no rigid body named '{}' (bodies must "
+                                     "be defined before the contact)",
+                                     t.name, t.body_name));
+    }
+  for (ContactTarget& t : model_.contact_.targets)
     if (t.kind == ContactTarget::Kind::kPlane || t.kind == ContactTarget::Kind::kCylinder ||
         t.kind == ContactTarget::Kind::kCapsule)
       t.normal.normalize();

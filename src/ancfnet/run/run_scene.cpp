@@ -50,6 +50,7 @@ class OutputWriters {
   // buffer reused between outputs.
   const std::vector<ContactPoint>& CollectContacts(const State& state) {
     contacts_.clear();
+    contact_.SetBodyRotations(&state.body_rotation);
     contact_.CollectContacts(state.q, state.v, state.contact_history, &contacts_);
     if (!self_contact_.empty()) {
       self_contact_.FindCandidates(state, 0.0);

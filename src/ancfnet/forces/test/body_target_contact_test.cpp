@@ -1,0 +1,107 @@
+// Contact with a target carried by a free, moving, spinning rigid body: the generalised forces
+// on the cable and on the body, and their Jacobians with respect to every coordinate (the
+// body's x and ψ included) against central differences.
+
+#include <gtest/gtest.h>
+
+#include "ancfnet/assembly/system_matrix.hpp"
+#include "ancfnet/forces/target_contact.hpp"
+#include "ancfnet/model/model_builder.hpp"
+#include "ancfnet/state/state.hpp"
+
+namespace ancfnet {
+namespace {
+
+Model MakeCableOnATumblingBox(bool friction) {
+  Material nylon{.youngs_modulus = 3e9, .density = 1140};
+  ModelBuilder builder;
+  const Matrix3d turn = Eigen::AngleAxisd(0.4, Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  builder.AddRigidBody({.name = "target",
+                        .mass = 5.0,
+                        .inertia = Vector3d(0.2, 0.3, 0.4).asDiagonal(),
+                        .position = Vector3d(0.01, -0.02, 0.03),
+                        .orientation = turn,
+                        .velocity = Vector3d(0.1, -0.2, 0.05),
+                        .angular_velocity = Vector3d(0.3, -0.5, 0.7)});
+  // A cable across the box's top face (z_B = 0.1), 1.5 mm into it at its middle.
+  const Vector3d a =
+      Vector3d(0.01, -0.02, 0.03) + turn * Vector3d(-0.2, 0.01, 0.1 + 0.002 - 0.0015);
+  const Vector3d b =
+      Vector3d(0.01, -0.02, 0.03) + turn * Vector3d(0.2, -0.02, 0.1 + 0.002 - 0.0012);
+  builder.AddCable({.name = "rope",
+                    .start = a,
+                    .end = b,
+                    .num_elements = 2,
+                    .properties = MakeCableProperties(nylon, MakeCircleSection(0.004))});
+  ContactSpec spec;
+  spec.normal = MakeDissipativeContactLaw(NormalLawKind::kCarvalhoMartins, 1e6, 0.4);
+  if (friction) spec.friction = MakeTanhFriction(0.4, 0.3, 1e-2, 1e-1);
+  spec.points_per_element = 5;
+  ContactTarget box;
+  box.kind = ContactTarget::Kind::kBox;
+  box.half_extents = Vector3d(0.3, 0.3, 0.1);
+  box.body_name = "target";
+  spec.targets.push_back(box);
+  builder.SetContact(spec);
+  return builder.Build();
+}
+
+void ExpectJacobiansMatch(const Model& model, bool check_stiffness, double tolerance) {
+  const TargetContact contact(model);
+  const State state = MakeInitialState(model);
+  VectorXd v = state.v;
+  for (Index i = 0; i < 6 * model.num_nodes(); ++i) v[i] += 0.01 * std::sin(1.7 * i + 0.3);
+  std::vector<double> history(static_cast<std::size_t>(CountContactPairs(model)), -0.2);
+  const auto forces = [&](const VectorXd& x, const VectorXd& x_dot) {
+    Workspace ws(model);
+    ws.internal_force.setZero();
+    ws.viscous_force.setZero();
+    contact.AddForces(x, x_dot, history, ws);
+    return VectorXd(ws.internal_force);
+  };
+  ASSERT_GE(contact.Summarize(state.q, v, history).active, 3);
+  // Action and reaction: the body's force balances the cable's.
+  const VectorXd f = forces(state.q, v);
+  const RigidBody& body = model.rigid_bodies()[0];
+  Vector3d on_cable = Vector3d::Zero();
+  for (Index node = 0; node < model.num_nodes(); ++node)
+    on_cable += f.segment<3>(model.NodePositionDof(node));
+  EXPECT_LT((on_cable + f.segment<3>(body.position_dof())).norm(), 1e-12 * on_cable.norm());
+  const DofMap all = DofMap::AllCoordinates(model);
+  for (const IterationWeights weights :
+       {IterationWeights{.mass = 0, .damping = 0, .stiffness = 1},
+        IterationWeights{.mass = 0, .damping = 1, .stiffness = 0}}) {
+    if (weights.stiffness != 0.0 && !check_stiffness) continue;
+    SystemMatrix matrix(model, all);
+    std::vector<std::pair<Index, Index>> couplings;
+    contact.FindBodyCouplings(state.q, v, 1e-3, matrix, &couplings);
+    matrix.AddContactCouplings(couplings);
+    matrix.SetZero();
+    contact.AddJacobian(state.q, v, history, weights, &matrix);
+    const MatrixXd analytic = MatrixXd(matrix.matrix());
+    MatrixXd fd(analytic.rows(), analytic.cols());
+    const double h = 1e-8;
+    for (Index j = 0; j < model.num_dofs(); ++j) {
+      VectorXd qp = state.q, qm = state.q, vp = v, vm = v;
+      if (weights.stiffness != 0.0)
+        qp[j] += h, qm[j] -= h;
+      else
+        vp[j] += h, vm[j] -= h;
+      fd.col(j) = (forces(qp, vp) - forces(qm, vm)) / (2 * h);
+    }
+    const double error = (analytic - fd).norm() / fd.norm();
+    std::printf("contact with a body, %s Jacobian: relative error %.2e\n",
+                weights.stiffness != 0.0 ? "stiffness" : "damping", error);
+    EXPECT_LT(error, tolerance);
+  }
+}
+
+TEST(BodyTargetContact, JacobiansMatchFiniteDifferences) {
+  // Left out of the stiffness: the change of G and of the body's moment arm with the rotation,
+  // of relative size F/(k ℓ).
+  ExpectJacobiansMatch(MakeCableOnATumblingBox(false), true, 1e-2);
+  ExpectJacobiansMatch(MakeCableOnATumblingBox(true), false, 1e-6);
+}
+
+}  // namespace
+}  // namespace ancfnet
