@@ -6,6 +6,7 @@
 
 #include "ancfnet/assembly/system_matrix.hpp"
 #include "ancfnet/forces/target_contact.hpp"
+#include "ancfnet/forces/test/central_difference_jacobian.hpp"
 #include "ancfnet/model/model_builder.hpp"
 #include "ancfnet/state/state.hpp"
 
@@ -79,16 +80,8 @@ void ExpectJacobiansMatch(const Model& model, bool check_stiffness, double toler
     matrix.SetZero();
     contact.AddJacobian(state.q, v, history, weights, &matrix);
     const MatrixXd analytic = MatrixXd(matrix.matrix());
-    MatrixXd fd(analytic.rows(), analytic.cols());
-    const double h = 1e-8;
-    for (Index j = 0; j < model.num_dofs(); ++j) {
-      VectorXd qp = state.q, qm = state.q, vp = v, vm = v;
-      if (weights.stiffness != 0.0)
-        qp[j] += h, qm[j] -= h;
-      else
-        vp[j] += h, vm[j] -= h;
-      fd.col(j) = (forces(qp, vp) - forces(qm, vm)) / (2 * h);
-    }
+    const MatrixXd fd =
+        test::CalcCentralDifferenceJacobian(forces, state.q, v, weights.stiffness != 0.0);
     const double error = (analytic - fd).norm() / fd.norm();
     std::printf("contact with a body, %s Jacobian: relative error %.2e\n",
                 weights.stiffness != 0.0 ? "stiffness" : "damping", error);

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "ancfnet/assembly/system_matrix.hpp"
+#include "ancfnet/forces/test/central_difference_jacobian.hpp"
 #include "ancfnet/model/model_builder.hpp"
 
 namespace ancfnet {
@@ -103,16 +104,9 @@ void ExpectJacobiansMatchFiniteDifferences(const Model& model, bool check_stiffn
     matrix.SetZero();
     f.contact.AddJacobian(f.state.q, f.state.v, weights, &matrix);
     const MatrixXd analytic = MatrixXd(matrix.matrix());
-    MatrixXd fd(analytic.rows(), analytic.cols());
-    const double h = 1e-8;
-    for (Index j = 0; j < model.num_dofs(); ++j) {
-      VectorXd qp = f.state.q, qm = f.state.q, vp = f.state.v, vm = f.state.v;
-      if (weights.stiffness != 0.0)
-        qp[j] += h, qm[j] -= h;
-      else
-        vp[j] += h, vm[j] -= h;
-      fd.col(j) = (f.Forces(qp, vp) - f.Forces(qm, vm)) / (2 * h);
-    }
+    const MatrixXd fd = test::CalcCentralDifferenceJacobian(
+        [&](const VectorXd& x, const VectorXd& x_dot) { return f.Forces(x, x_dot); }, f.state.q,
+        f.state.v, weights.stiffness != 0.0);
     const double error = (analytic - fd).norm() / fd.norm();
     std::printf("self-contact %s Jacobian: relative error %.2e\n",
                 weights.stiffness != 0.0 ? "stiffness" : "damping", error);

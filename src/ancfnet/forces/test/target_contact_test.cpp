@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "ancfnet/contact/mesh/icosphere.hpp"
+#include "ancfnet/forces/test/central_difference_jacobian.hpp"
 #include "ancfnet/model/model_builder.hpp"
 
 namespace ancfnet {
@@ -60,17 +61,10 @@ void ExpectJacobiansMatchFiniteDifferences(const Model& model, bool check_stiffn
     matrix.SetZero();
     contact.AddJacobian(q, v, history, weights, &matrix);
     const MatrixXd analytic = MatrixXd(matrix.matrix());
-    const double h = 1e-8;
-    for (Index j = 0; j < model.num_dofs(); ++j) {
-      VectorXd qp = q, qm = q, vp = v, vm = v;
-      if (weights.stiffness != 0.0)
-        qp[j] += h, qm[j] -= h;
-      else
-        vp[j] += h, vm[j] -= h;
-      const VectorXd fd = (forces(qp, vp) - forces(qm, vm)) / (2 * h);
-      EXPECT_LT((analytic.col(j) - fd).norm(), 2e-5 * analytic.norm() + 1e-9)
+    const MatrixXd fd = test::CalcCentralDifferenceJacobian(forces, q, v, weights.stiffness != 0.0);
+    for (Index j = 0; j < model.num_dofs(); ++j)
+      EXPECT_LT((analytic.col(j) - fd.col(j)).norm(), 2e-5 * analytic.norm() + 1e-9)
           << (weights.stiffness != 0.0 ? "stiffness" : "damping") << ", column " << j;
-    }
   }
 }
 
