@@ -80,7 +80,7 @@ std::vector<SelfContactPrimitive> MakeSelfContactPrimitives(const Model& model) 
 
 SelfContactFilter::SelfContactFilter(const Model& model,
                                      const std::vector<SelfContactPrimitive>& primitives)
-    : primitives_(&primitives) {
+    : primitives_(&primitives), cables_(&model.cables()) {
   const auto& cables = model.cables();
   const Index num_cables = static_cast<Index>(cables.size());
   const Index num_points = static_cast<Index>(model.point_masses().size());
@@ -141,6 +141,13 @@ double SelfContactFilter::ArcToEnd(const SelfContactPrimitive& p, int end) const
   return end == 0 ? p.arc0 : cable_length_[p.cable] - p.arc1;
 }
 
+bool SelfContactFilter::AtEndElement(const SelfContactPrimitive& p, int end) const {
+  if (p.cable < 0) return true;
+  const Cable& cable = (*cables_)[p.cable];
+  return p.element ==
+         (end == 0 ? cable.first_element : cable.first_element + cable.num_elements - 1);
+}
+
 bool SelfContactFilter::Excluded(int a, int b) const {
   const SelfContactPrimitive& pa = (*primitives_)[a];
   const SelfContactPrimitive& pb = (*primitives_)[b];
@@ -155,7 +162,10 @@ bool SelfContactFilter::Excluded(int a, int b) const {
   const std::array<int, 2> ja = junctions(pa), jb = junctions(pb);
   for (int i = 0; i < 2; ++i)
     for (int j = 0; j < 2; ++j)
-      if (ja[i] >= 0 && ja[i] == jb[j] && ArcToEnd(pa, i) + ArcToEnd(pb, j) < reach) return true;
+      if (ja[i] >= 0 && ja[i] == jb[j] &&
+          ((AtEndElement(pa, i) && AtEndElement(pb, j)) ||
+           ArcToEnd(pa, i) + ArcToEnd(pb, j) < reach))
+        return true;
   return false;
 }
 

@@ -13,6 +13,7 @@
 namespace ancfnet {
 
 class Model;
+struct Cable;
 
 struct SelfContactPrimitive {
   Index element = -1;                  ///< cable element, or −1 for a point mass
@@ -36,8 +37,9 @@ std::vector<SelfContactPrimitive> MakeSelfContactPrimitives(const Model& model);
 
 /// Decides which pairs of primitives are left out: on one cable, those closer along it than
 /// 2 (r_a + r_b) (neighbours, which touch by construction); across a junction (an ideal knot's
-/// shared position, a point mass linked to thread ends, or such links chained), those whose arc
-/// distances to the junction add up to less than 2 (r_a + r_b).
+/// shared position, a point mass linked to thread ends, or such links chained), those on the two
+/// elements that meet there (threads meeting at a knot fold onto each other about it freely),
+/// and those whose arc distances to the junction add up to less than 2 (r_a + r_b).
 class SelfContactFilter {
  public:
   SelfContactFilter(const Model& model, const std::vector<SelfContactPrimitive>& primitives);
@@ -47,8 +49,11 @@ class SelfContactFilter {
   // Distance along the primitive's cable from it to its cable's end `end` (0 or 1), or 0 for a
   // point mass's own junction.
   double ArcToEnd(const SelfContactPrimitive& p, int end) const;
+  // Whether p lies on its cable's element at end `end` (a point mass: always).
+  bool AtEndElement(const SelfContactPrimitive& p, int end) const;
 
   const std::vector<SelfContactPrimitive>* primitives_;
+  const std::vector<Cable>* cables_;
   std::vector<double> cable_length_;
   std::vector<std::array<int, 2>> cable_end_junction_;  // junction of each cable end, −1 none
   std::vector<int> point_mass_junction_;

@@ -157,16 +157,17 @@ TEST(SelfContactFilter, LeavesOutNeighboursOnAThreadAndAtAKnot) {
   EXPECT_TRUE(filter.Excluded(0, 1));
   EXPECT_TRUE(filter.Excluded(0, 3));
   EXPECT_FALSE(filter.Excluded(0, 4));
-  // Across the knot: a's and b's first capsules are neighbours, a's 2nd and b's 2nd
-  // (3.125 + 3.125 mm) too, a's 3rd and b's 2nd (6.25 + 3.125 mm) not.
+  // Across the knot: the capsules of the two elements that meet there (a's and b's first
+  // elements, capsules 0 … 7) are left out; a's second element and b's first are kept.
   const int b = 32, c = 64, knot = 96;
   EXPECT_TRUE(filter.Excluded(0, b));
-  EXPECT_TRUE(filter.Excluded(1, b + 1));
-  EXPECT_FALSE(filter.Excluded(2, b + 1));
-  // The knot sphere and the threads it holds; c is unrelated.
+  EXPECT_TRUE(filter.Excluded(7, b + 7));
+  EXPECT_FALSE(filter.Excluded(8, b + 1));
+  // The knot sphere and the elements it holds; c is unrelated.
   EXPECT_TRUE(filter.Excluded(0, knot));
   EXPECT_TRUE(filter.Excluded(b, knot));
-  EXPECT_FALSE(filter.Excluded(4, knot));
+  EXPECT_TRUE(filter.Excluded(4, knot));
+  EXPECT_FALSE(filter.Excluded(8, knot));
   EXPECT_FALSE(filter.Excluded(c, knot));
   EXPECT_FALSE(filter.Excluded(0, c));
 }
