@@ -6,8 +6,11 @@
 
 #include <fmt/format.h>
 
+#include <omp.h>
+
 #include <CLI/CLI.hpp>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <new>
 
@@ -57,6 +60,10 @@ int RunCommand(const std::string& scene_file, const std::string& output_dir, boo
 }  // namespace
 
 int main(int argc, char** argv) {
+  // One thread unless OMP_NUM_THREADS asks for more: the element loops are short, and a second
+  // thread spin-waiting at their barriers costs far more than it saves once another process
+  // wants the core (docs/benchmarks.md, "Threads and the shared machine").
+  if (!std::getenv("OMP_NUM_THREADS")) omp_set_num_threads(1);
   CLI::App app{"ancfnet: dynamics of cables, ropes and tether nets with ANCF elements"};
   app.require_subcommand(1);
   std::string scene_file;
