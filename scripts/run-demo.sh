@@ -1,32 +1,36 @@
 #!/usr/bin/env bash
-# The README's demo: runs the main example (the deployment of a square tether net pulled open by
-# four corner bullets), plots its probes and says where everything is.
+# The README's demo: runs the main example (a tether net shot at a tumbling, box-shaped target
+# that carries a mesh antenna, in zero gravity, with self-contact), plots its probes and says
+# where everything is. The net deployment stays an example (examples/net_deploy.yaml).
 # Usage: scripts/run-demo.sh <ancfnet binary>   (called by `make demo` after the build)
 set -euo pipefail
 
 binary="${1:?usage: run-demo.sh <ancfnet binary>}"
 root="$(cd "$(dirname "$0")/.." && pwd)"
-scene="$root/examples/net_deploy.yaml"
-out="$root/out/net_deploy"
+scene="$root/examples/net_capture.yaml"
+out="$root/out/net_capture"
 
 "$binary" run "$scene" -o "$out"
 /usr/bin/python3 "$root/tools/plot_probes.py" "$out/probes.csv" -o "$out/plots" >/dev/null
-/usr/bin/python3 "$root/tools/plot_deployment.py" "$out/probes.csv" -o "$out/plots/deployment.png" |
-  tail -n 1
 
 /usr/bin/python3 - "$out/summary.json" <<'PY'
 import json, sys
 summary = json.load(open(sys.argv[1]))
 probes = summary["probes"]
-tension = probes["tension"]["max_tension"]
-print(f"at t = {summary['time']:.3g} s: centroid {probes['travel']['distance']:.3f} m along the axis,"
-      f" largest thread tension {tension['tension']:.3g} N in {tension['thread']};"
-      f" {summary['steps']} steps, {summary['wall_time_s']:.2f} s")
+hull, antenna = probes["hull"]["contact"], probes["antenna"]["contact"]
+rates = probes["rates"]["body_velocity"]
+print(f"at t = {summary['time']:.3g} s: {hull['active']} contacts on the hull "
+      f"({hull['normal_force']:.3g} N), {antenna['active']} on the antenna "
+      f"({antenna['normal_force']:.3g} N); target drifting at "
+      f"{[round(v, 4) for v in rates['linear']]} m/s; "
+      f"{summary['steps']} steps, {summary['wall_time_s']:.1f} s")
 PY
 cat <<MSG
 Results in $out:
   summary.json              final probe values, energies, step and iteration counts
-  probes.csv                mouth area, travel, centroid, bullet, tension, energies every 0.01 s
-  cables.pvd                the net over time (threads coloured by tension): open it in ParaView
-  plots/deployment.png      mouth area and distance travelled; plots/*.png every probe
+  probes.csv                target pose and rates, contact forces and moments on the hull and the
+                            antenna, net centroid, energies every 0.01 s
+  cables.pvd                the net and the target's axes over time: open it in ParaView
+  contacts.pvd              the contact points and forces, beside cables.pvd
+  plots/*.png               every probe against time
 MSG
