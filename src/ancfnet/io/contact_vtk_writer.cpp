@@ -25,16 +25,9 @@ void ContactVtkWriter::WriteFrame(double time, const std::vector<ContactPoint>& 
   for (std::size_t i = 0; i < contacts.size(); ++i)
     if (!IsFinite(contacts[i]))
       throw SolverError(fmt::format("non-finite value at contact point {}", i), time);
-  const auto write_vector = [](const Vector3d& v, auto it) {
-    fmt::format_to(it, "{} {} {}", v.x(), v.y(), v.z());
-  };
   std::string out;
   auto it = std::back_inserter(out);
-  out +=
-      "<?xml version=\"1.0\"?>\n"
-      "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
-      "header_type=\"UInt64\">\n"
-      "  <PolyData>\n";
+  out += kVtkPolyDataHeader;
   fmt::format_to(it,
                  "    <Piece NumberOfPoints=\"{0}\" NumberOfVerts=\"{0}\" NumberOfLines=\"0\" "
                  "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n",
@@ -44,14 +37,14 @@ void ContactVtkWriter::WriteFrame(double time, const std::vector<ContactPoint>& 
     fmt::format_to(o, "{}", c.normal_force);
   });
   AppendVtkDataArray(&out, "force", 3, contacts,
-                     [&](const ContactPoint& c, auto o) { write_vector(c.force_W, o); });
+                     [&](const ContactPoint& c, auto o) { WriteVtkVector(c.force_W, o); });
   AppendVtkDataArray(&out, "normal", 3, contacts,
-                     [&](const ContactPoint& c, auto o) { write_vector(c.normal_W, o); });
+                     [&](const ContactPoint& c, auto o) { WriteVtkVector(c.normal_W, o); });
   AppendVtkDataArray(&out, "penetration", 1, contacts,
                      [](const ContactPoint& c, auto o) { fmt::format_to(o, "{}", c.penetration); });
   out += "      </PointData>\n      <Points>\n";
   AppendVtkDataArray(&out, "position", 3, contacts,
-                     [&](const ContactPoint& c, auto o) { write_vector(c.point_W, o); });
+                     [&](const ContactPoint& c, auto o) { WriteVtkVector(c.point_W, o); });
   out += "      </Points>\n      <Verts>\n";
   // One vertex cell per point.
   out += "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n         ";

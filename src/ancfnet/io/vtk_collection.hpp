@@ -14,6 +14,19 @@ namespace ancfnet {
 /// Writes `text` to `path` (truncating it). Throws InputError "cannot write PATH" on failure.
 void WriteTextFile(const std::filesystem::path& path, const std::string& text);
 
+/// The opening of a VTK XML PolyData file, up to and including `<PolyData>`.
+inline constexpr const char* kVtkPolyDataHeader =
+    "<?xml version=\"1.0\"?>\n"
+    "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
+    "header_type=\"UInt64\">\n"
+    "  <PolyData>\n";
+
+/// Writes "x y z" of v to an output iterator (a DataArray value of 3 components).
+template <typename Vector, typename Iterator>
+void WriteVtkVector(const Vector& v, Iterator it) {
+  fmt::format_to(it, "{} {} {}", v.x(), v.y(), v.z());
+}
+
 /// Appends `<DataArray type="Float64" Name=NAME NumberOfComponents=N format="ascii">` to `out`,
 /// one line per item of `items`, written by `write_value(item, output_iterator)`.
 template <typename Items, typename Writer>

@@ -88,16 +88,9 @@ void VtkSeriesWriter::CheckSamplesFinite(double time) const {
 }
 
 std::string VtkSeriesWriter::FormatPolyData(const Model& model) const {
-  const auto write_vector = [](const Vector3d& v, auto it) {
-    fmt::format_to(it, "{} {} {}", v.x(), v.y(), v.z());
-  };
   std::string out;
   auto it = std::back_inserter(out);
-  out +=
-      "<?xml version=\"1.0\"?>\n"
-      "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
-      "header_type=\"UInt64\">\n"
-      "  <PolyData>\n";
+  out += kVtkPolyDataHeader;
   fmt::format_to(it,
                  "    <Piece NumberOfPoints=\"{}\" NumberOfVerts=\"0\" NumberOfLines=\"{}\" "
                  "NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n",
@@ -105,7 +98,7 @@ std::string VtkSeriesWriter::FormatPolyData(const Model& model) const {
 
   out += "      <PointData Scalars=\"tension\" Vectors=\"velocity\">\n";
   AppendVtkDataArray(&out, "velocity", 3, samples_,
-                     [&](const Sample& s, auto o) { write_vector(s.velocity, o); });
+                     [&](const Sample& s, auto o) { WriteVtkVector(s.velocity, o); });
   AppendVtkDataArray(&out, "axial_strain", 1, samples_,
                      [](const Sample& s, auto o) { fmt::format_to(o, "{}", s.axial_strain); });
   AppendVtkDataArray(&out, "curvature", 1, samples_,
@@ -114,7 +107,7 @@ std::string VtkSeriesWriter::FormatPolyData(const Model& model) const {
                      [](const Sample& s, auto o) { fmt::format_to(o, "{}", s.tension); });
   out += "      </PointData>\n      <Points>\n";
   AppendVtkDataArray(&out, "position", 3, samples_,
-                     [&](const Sample& s, auto o) { write_vector(s.position, o); });
+                     [&](const Sample& s, auto o) { WriteVtkVector(s.position, o); });
   out += "      </Points>\n      <Lines>\n";
 
   // One polyline per cable over consecutive point indices.
