@@ -123,21 +123,18 @@ ContactTarget ReadTarget(const YamlValue& value, const std::filesystem::path& sc
         map.Get("half_extents").Fail("half extents must be > 0");
       break;
     case 3:
+    case 4: {
+      // A cylinder and a capsule share their keys; a capsule's axis may have zero length.
       map.CheckKeys({"name", "type", "body", "center", "axis", "radius", "half_length"});
-      t.kind = ContactTarget::Kind::kCylinder;
+      const bool capsule = type == 4;
+      t.kind = capsule ? ContactTarget::Kind::kCapsule : ContactTarget::Kind::kCylinder;
       t.point = map.Get("center").AsVector3();
       t.normal = ReadAxis(map);
       t.radius = map.Get("radius").AsPositive();
-      t.half_length = map.Get("half_length").AsPositive();
+      const YamlValue half_length = map.Get("half_length");
+      t.half_length = capsule ? half_length.AsNonNegative() : half_length.AsPositive();
       break;
-    case 4:
-      map.CheckKeys({"name", "type", "body", "center", "axis", "radius", "half_length"});
-      t.kind = ContactTarget::Kind::kCapsule;
-      t.point = map.Get("center").AsVector3();
-      t.normal = ReadAxis(map);
-      t.radius = map.Get("radius").AsPositive();
-      t.half_length = map.Get("half_length").AsNonNegative();
-      break;
+    }
     default:
       map.CheckKeys({"name", "type", "body", "file", "scale", "position", "rotation"});
       t.kind = ContactTarget::Kind::kMesh;
