@@ -104,6 +104,53 @@ TEST(TargetContact, HertzImpactDurationAndDepth) {
   EXPECT_LT(impact.balance_error, 1e-3 * 0.5 * kMass * kSpeed * kSpeed);
 }
 
+// The same Hertz strike with a time step as long as the whole contact (t_c = 2 ms): without the
+// step control on the penetration the sphere enters far too deep within the first step and the
+// impact is lost; with it, steps are cut while the sphere sinks by more than η r each, and the
+// depth and rebound of the resolved impact come back.
+TEST(TargetContact, CoarseStepImpactIsResolvedByThePenetrationControl) {
+  const NormalLaw law = MakeHertzContactLaw(1e7);
+  const double delta_max = std::pow(5.0 * kMass * kSpeed * kSpeed / (4.0 * law.stiffness), 0.4);
+  const double hertz_time = 2.943275 * delta_max / kSpeed;
+  auto strike = [&](double increment, long* cuts) {
+    ModelBuilder builder;
+    builder.AddPointMass("ball", kMass, Vector3d(0, 0, kRadius + 1e-4), Vector3d(0, 0, -kSpeed));
+    ContactSpec spec = PlaneContact(law);
+    spec.penetration_increment = increment;
+    builder.SetContact(spec);
+    const Model model = builder.Build();
+    DynamicSettings settings;
+    settings.integrator = IntegratorType::kImplicitMidpoint;
+    settings.time_step = hertz_time;
+    settings.end_time = 3.0 * hertz_time;
+    State state = MakeInitialState(model);
+    double deepest = 0.0;
+    const SolveResult result = SolveDynamic(
+        model, settings, 0.0,
+        [&](const State& s, const EnergyAccount&) {
+          deepest = std::max(deepest, kRadius - s.q[2]);
+        },
+        &state);
+    EXPECT_TRUE(result.completed) << result.message;
+    *cuts = result.statistics.step_cuts;
+    return std::pair(deepest, state.v[2]);
+  };
+  long cuts_off = 0, cuts_on = 0;
+  const auto [deep_off, rebound_off] = strike(0.0, &cuts_off);
+  const auto [deep_on, rebound_on] = strike(0.002, &cuts_on);
+  std::printf(
+      "coarse-step impact (h = t_c = %.3g s, δ_max = %.4g m): no control δ = %.4g m, rebound "
+      "%.4f m/s; η = 0.002: δ = %.4g m, rebound %.4f m/s, %ld cuts\n",
+      hertz_time, delta_max, deep_off, rebound_off, deep_on, rebound_on, cuts_on);
+  // Measured: without control 7.7 % too deep and 15 % of the rebound lost; with it the depth to
+  // 10⁻⁴ and the rebound to 1.1 % (the steps grow back while the sphere leaves).
+  EXPECT_GT(std::abs(deep_off / delta_max - 1.0), 0.05);
+  EXPECT_GT(std::abs(rebound_off / kSpeed - 1.0), 0.1);
+  EXPECT_NEAR(deep_on / delta_max, 1.0, 0.01);
+  EXPECT_NEAR(rebound_on, kSpeed, 0.02 * kSpeed);
+  EXPECT_GT(cuts_on, 0);
+}
+
 // A block (point mass) resting on a plane tilted by θ about y, under gravity, with tanh friction
 // μ_s = 0.4, μ_k = 0.3: above the friction angle it slides at g (sin θ − μ_k cos θ); below, it
 // creeps at a speed far below 1 mm/s.

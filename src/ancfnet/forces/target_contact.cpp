@@ -1,5 +1,7 @@
 #include "ancfnet/forces/target_contact.hpp"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 
@@ -303,6 +305,35 @@ void TargetContact::UpdateHistory(const VectorXd& q, const VectorXd& v,
       }
     }
   }
+}
+
+std::string TargetContact::CheckStep(const VectorXd& q_start, const VectorXd& v_start,
+                                     const VectorXd& q, const VectorXd& v) const {
+  const double fraction = model_.contact().penetration_increment;
+  if (!(fraction > 0.0)) return {};
+  const auto& targets = model_.contact().targets;
+  for (std::size_t t = 0; t < targets.size(); ++t) {
+    const Frame start = CalcFrame(targets[t], q_start, v_start);
+    const Frame end = CalcFrame(targets[t], q, v);
+    for (const ContactProbe& probe : probes_) {
+      Vector3d x, x_dot;
+      Locate(probe, q, v, &x, &x_dot);
+      const double depth = CalcKinematics(targets[t], end, probe, x, x_dot).penetration;
+      const double limit = fraction * probe.radius;
+      if (!(depth > limit)) continue;
+      Locate(probe, q_start, v_start, &x, &x_dot);
+      const double depth_start = CalcKinematics(targets[t], start, probe, x, x_dot).penetration;
+      if (depth - std::max(depth_start, 0.0) <= limit) continue;
+      const std::string where =
+          probe.element >= 0 ? fmt::format("element {} at ξ = {:.3f}", probe.element, probe.xi)
+                             : fmt::format("point mass {}", probe.point_mass);
+      return fmt::format(
+          "the inspection sphere of {} sank {:.3g} m into target '{}' in one step (more than {} "
+          "of its radius)",
+          where, depth - std::max(depth_start, 0.0), targets[t].name, fraction);
+    }
+  }
+  return {};
 }
 
 TargetContact::Summary TargetContact::Summarize(const VectorXd& q, const VectorXd& v,

@@ -5,6 +5,7 @@
 /// coordinate and mapped to positions and slopes by Q = Sᵀ(ξ) f, with the Jacobians an implicit
 /// integrator needs (docs/theory.md, "Contact with rigid targets").
 
+#include <string>
 #include <vector>
 
 #include "ancfnet/assembly/forces.hpp"
@@ -58,6 +59,11 @@ class TargetContact {
   /// dependence on the positions through the tangent plane.
   void AddJacobian(const VectorXd& q, const VectorXd& v, const std::vector<double>& history,
                    const IterationWeights& weights, SystemMatrix* matrix) const;
+  /// Empty when a converged step from (q_start, v_start) to (q, v) may be accepted, else why not:
+  /// a probe sank into a target by more than ContactSpec::penetration_increment of its radius
+  /// during the step (δ − max(δ_start, 0) > η r).
+  std::string CheckStep(const VectorXd& q_start, const VectorXd& v_start, const VectorXd& q,
+                        const VectorXd& v) const;
   /// After an accepted step: a pair apart stores minus its closing speed; a pair that has just
   /// touched freezes its impact speed (the larger of the closing speeds before and now, at least
   /// the law's minimum); a pair in contact keeps it.

@@ -114,7 +114,7 @@ StepOutcome GeneralizedAlphaIntegrator::Step(double h, State* state) {
     result.jacobian_updates += first.jacobian_updates;
   }
   if (result.converged) {
-    result.failure = core_.CheckStep(state->q);
+    result.failure = core_.CheckStep(state->q, state->v);
     result.converged = result.failure.empty();
   }
   StepOutcome outcome{.accepted = result.converged,

@@ -86,7 +86,7 @@ StepOutcome ImplicitMidpointIntegrator::Step(double h, State* state) {
       state->q[i] = 2.0 * midpoint_.q[i] - previous.q[i];
       state->v[i] = 2.0 * midpoint_.v[i] - previous.v[i];
     }
-    outcome.failure = core_.CheckStep(state->q);
+    outcome.failure = core_.CheckStep(state->q, state->v);
     outcome.accepted = outcome.failure.empty();
   }
   if (!outcome.accepted) {

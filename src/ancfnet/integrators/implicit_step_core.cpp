@@ -53,8 +53,12 @@ void ImplicitStepCore::BeginStep(double h, const State& state) {
   }
 }
 
-std::string ImplicitStepCore::CheckStep(const VectorXd& q) const {
-  return self_contact_.empty() ? std::string() : self_contact_.CheckStep(q);
+std::string ImplicitStepCore::CheckStep(const VectorXd& q, const VectorXd& v) const {
+  if (!self_contact_.empty()) {
+    std::string failure = self_contact_.CheckStep(q);
+    if (!failure.empty()) return failure;
+  }
+  return contact_.empty() ? std::string() : contact_.CheckStep(previous_.q, previous_.v, q, v);
 }
 
 void ImplicitStepCore::CalcResidual(const VectorXd& q, const VectorXd& v, const VectorXd& a,

@@ -26,9 +26,9 @@ class ImplicitStepCore {
   /// iteration matrix depends on h). Finds the self-contact pairs to watch during the step and
   /// adds their couplings to the iteration matrix (a new pattern is analysed anew).
   void BeginStep(double h, const State& state);
-  /// Empty when a converged step to q may be accepted, else why not (self-contact search
-  /// margin exceeded, threads passed through each other).
-  std::string CheckStep(const VectorXd& q) const;
+  /// Empty when a converged step to (q, v) may be accepted, else why not (self-contact search
+  /// margin exceeded, threads passed through each other, a probe sank too far into a target).
+  std::string CheckStep(const VectorXd& q, const VectorXd& v) const;
   /// After a converged step: the contact history at the new state; the bodies' reference
   /// orientations rebased (R_ref ← R_ref exp(ψ̃), ψ ← 0), in the state and in ws().
   void AcceptStep(State* state);

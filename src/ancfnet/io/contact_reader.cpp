@@ -150,13 +150,15 @@ void ReadContact(const YamlValue& value, const std::filesystem::path& scene_dire
                  ModelBuilder* builder) {
   const YamlMap map = value.AsMap();
   map.CheckKeys({"law", "friction", "cable_radius", "point_mass_radius", "points_per_element",
-                 "targets", "self_contact", "self_contact_geometry", "capsules_per_element"});
+                 "targets", "self_contact", "self_contact_geometry", "capsules_per_element",
+                 "penetration_increment"});
   ContactSpec spec;
   spec.normal = ReadNormalLaw(map.Get("law"));
   if (auto v = map.Find("friction")) spec.friction = ReadFriction(*v);
   if (auto v = map.Find("cable_radius")) spec.cable_radius = v->AsPositive();
   if (auto v = map.Find("point_mass_radius")) spec.point_mass_radius = v->AsNonNegative();
   if (auto v = map.Find("points_per_element")) spec.points_per_element = v->AsInt(1, 1000);
+  if (auto v = map.Find("penetration_increment")) spec.penetration_increment = v->AsNonNegative();
   if (auto v = map.Find("self_contact")) spec.self_contact = v->AsBool();
   if (auto v = map.Find("self_contact_geometry"))
     spec.self_geometry = v->AsChoice({"capsules", "spheres"}) == 0

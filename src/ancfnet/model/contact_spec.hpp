@@ -49,6 +49,10 @@ struct ContactSpec {
   /// Radius of the inspection spheres (m); 0: each cable's own section radius.
   double cable_radius = 0.0;
   double point_mass_radius = 0.0;  ///< m, ≥ 0
+  /// Step control: a step is rejected (and cut) when an inspection sphere or point mass sinks
+  /// into a target by more than this fraction of its radius within the step, so that impacts are
+  /// resolved over several steps instead of absorbed in one; 0: no limit.
+  double penetration_increment = 0.05;
 
   /// Contact of the threads with each other and with the point masses (knots), and of the
   /// point masses with each other (forces/self_contact.hpp).

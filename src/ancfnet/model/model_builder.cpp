@@ -105,6 +105,7 @@ void ModelBuilder::SetContact(const ContactSpec& contact) {
     throw InputError("contact: capsules_per_element must be 0 (automatic) … 1000");
   RequireNonNegative(contact.cable_radius, "contact cable radius");
   RequireNonNegative(contact.point_mass_radius, "contact point mass radius");
+  RequireNonNegative(contact.penetration_increment, "contact penetration increment");
   for (const ContactTarget& t : contact.targets) {
     RequireFinite(t.point, "contact target position");
     switch (t.kind) {
