@@ -42,6 +42,7 @@ void ImplicitStepCore::BeginStep(double h, const State& state) {
   ws_.body_rotation = state.body_rotation;
   if (h != last_h_) newton_.InvalidateJacobian();
   last_h_ = h;
+  contact_.SetStepSize(h);
   if (!self_contact_.empty()) {
     self_contact_.FindCandidates(state, h);
     if (iteration_matrix_.AddContactCouplings(self_contact_.candidate_owners()))

@@ -52,7 +52,8 @@ void ExpectJacobiansMatch(const Model& model, bool check_stiffness, double toler
   const State state = MakeInitialState(model);
   VectorXd v = state.v;
   for (Index i = 0; i < 6 * model.num_nodes(); ++i) v[i] += 0.01 * std::sin(1.7 * i + 0.3);
-  std::vector<double> history(static_cast<std::size_t>(CountContactPairs(model)), -0.2);
+  std::vector<ContactPairHistory> history(static_cast<std::size_t>(CountContactPairs(model)),
+                                          {.speed = -0.2});
   const auto forces = [&](const VectorXd& x, const VectorXd& x_dot) {
     Workspace ws(model);
     ws.internal_force.setZero();
