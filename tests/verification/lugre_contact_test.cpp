@@ -94,8 +94,8 @@ TEST(LuGreContact, BlockBelowTheFrictionAnglePreSlidesAndSticks) {
               lugre.displacement, expected, lugre.speed);
   EXPECT_NEAR(lugre.displacement / expected, 1.0, 0.15);
   EXPECT_LT(std::abs(lugre.speed), 1e-6);
-  // The tanh law (v_r = 0.1 mm/s) creeps at v = v_r atanh(tan θ/g(v)), g(v) ≈ μ_s.
-  constexpr double kRegularization = 1e-4;
+  // The tanh law (v_r = 1 mm/s) creeps at v = v_r atanh(tan θ/g(v)), g(v) ≈ μ_s.
+  constexpr double kRegularization = 1e-3;
   const Slide tanh =
       SlideBlock(15.0, MakeTanhFriction(kMuS, kMuK, kRegularization, kStribeckSpeed), 1.0);
   double creep = kRegularization * std::atanh(std::tan(theta) / kMuS);

@@ -87,7 +87,10 @@ void ImplicitStepCore::CalcForces(const VectorXd& q, const VectorXd& v) {
 }
 
 void ImplicitStepCore::AcceptStep(State* state) {
-  if (!contact_.empty()) contact_.UpdateHistory(state->q, state->v, &state->contact_history);
+  if (!contact_.empty()) {
+    contact_.UpdateHistory(state->q, state->v, &state->contact_history);
+    contact_.SetStepSize(0.0);  // ws() forces from now on: those of the accepted state
+  }
   if (!self_contact_.empty())
     self_contact_.UpdateHistory(state->q, state->v, &state->self_contact_history);
   RebaseBodyRotations(model_, state);

@@ -48,14 +48,15 @@ Model MakeCrossingCables(const std::optional<FrictionLaw>& friction, bool dampin
 }
 
 struct Fixture {
-  // `bristle`: the LuGre deflection every pair starts the step with.
+  // `bristle` (if not zero): the LuGre deflection every pair starts the step with.
   explicit Fixture(const Model& m, const Vector3d& bristle = Vector3d::Zero())
       : model(m), contact(m), state(MakeInitialState(m)) {
     for (Index i = 0; i < state.v.size(); ++i) state.v[i] = 0.01 * std::sin(1.7 * i + 0.3);
     const int n = static_cast<int>(contact.primitives().size());
-    for (int a = 0; a < n; ++a)
-      for (int b = a + 1; b < n; ++b)
-        state.self_contact_history.push_back({a, b, {.speed = 0.3, .bristle = bristle}});
+    if (bristle != Vector3d::Zero())
+      for (int a = 0; a < n; ++a)
+        for (int b = a + 1; b < n; ++b)
+          state.self_contact_history.push_back({a, b, {.speed = 0.3, .bristle = bristle}});
     contact.FindCandidates(state, 1e-3);
   }
   VectorXd Forces(const VectorXd& q, const VectorXd& v, double* energy = nullptr) const {
