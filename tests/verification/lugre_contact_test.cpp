@@ -6,7 +6,9 @@
 // a = g (sin θ − μ_k cos θ). A thread lying on a horizontal plane, pulled along itself at one
 // end by a force F: below μ_s W (its weight W) it pre-slides by the same law with F/W for
 // tan θ and stays put; above, it slides at (F − μ_k W)/m. A knot resting on a fixed knot off
-// its top sticks like the block (self-contact). docs/validation.md, "The LuGre law in contact".
+// its top sticks like the block (self-contact), and so does a block on a turntable (a plane on a
+// turning body), its bristle turning with the table. docs/validation.md, "The LuGre law in
+// contact".
 
 #include <gtest/gtest.h>
 
@@ -230,6 +232,57 @@ TEST(LuGreContact, KnotRestingOnAKnotSticks) {
               expected, speed);
   EXPECT_NEAR(x / expected, 1.0, 0.15);
   EXPECT_LT(speed, 1e-6);
+}
+
+// A turntable: a plane carried by a body turning at ω = 2 rad/s about the vertical, and a block at
+// R = 0.5 m on it, moving with it from the start. The centripetal load m ω² R = 0.51 μ_s N is held
+// by the bristle, which must turn with the table (it is stored in the body's frame): the block
+// pre-slides outwards, then stays at one place on the table. A bristle left fixed in space would
+// have to be re-stretched by a slip of ω |z| along the rim, 2π |z| ≈ 0.1 mm a turn.
+TEST(LuGreContact, BlockOnATurntableTurnsWithIt) {
+  constexpr double kMass = 0.1, kRadius = 0.01, kStiffness = 1e4, kOmega = 2.0, kArm = 0.5;
+  ModelBuilder builder;
+  builder.SetGravity(Vector3d(0, 0, -kG));
+  builder.AddRigidBody({.name = "table",
+                        .mass = 10.0,
+                        .angular_velocity = Vector3d(0, 0, kOmega),
+                        .motion = BodyMotion::kPrescribed});
+  const double delta = kMass * kG / kStiffness;
+  builder.AddPointMass("block", kMass, Vector3d(kArm, 0, kRadius - delta),
+                       Vector3d(0, kOmega * kArm, 0));
+  ContactSpec spec =
+      PlaneContact(Vector3d::UnitZ(), MakeLinearContactLaw(kStiffness, 60.0), LuGre());
+  spec.targets[0].body_name = "table";
+  spec.point_mass_radius = kRadius;
+  builder.SetContact(spec);
+  const Model model = builder.Build();
+  DynamicSettings settings;
+  settings.time_step = 2e-4;
+  const double turn = 2.0 * std::numbers::pi / kOmega;
+  settings.end_time = 0.5 + turn;
+  State state = MakeInitialState(model);
+  const Index dof = model.point_masses()[0].dof;
+  // The block's place on the table, x_B = Rᵀ(ωt) x.
+  const auto on_table = [&](const State& s) {
+    return Vector3d(Eigen::AngleAxisd(-kOmega * s.t, Vector3d::UnitZ()) * s.q.segment<3>(dof));
+  };
+  Vector3d start = Vector3d::Zero();
+  const SolveResult result = SolveDynamic(
+      model, settings, 0.0,
+      [&](const State& s, const EnergyAccount&) {
+        if (std::abs(s.t - 0.5) < 0.5 * settings.time_step) start = on_table(s);
+      },
+      &state);
+  ASSERT_TRUE(result.completed) << result.message;
+  const Vector3d end = on_table(state);
+  const double outwards = start.x() - kArm;
+  const double expected = PreSliding(kOmega * kOmega * kArm / (kMuS * kG));
+  std::printf(
+      "LuGre turntable: pre-slides %.4e m outwards (1-D value %.4e m), then moves %.2e m "
+      "on the table in a turn\n",
+      outwards, expected, (end - start).norm());
+  EXPECT_NEAR(outwards / expected, 1.0, 0.15);
+  EXPECT_LT((end - start).norm(), 1e-6);
 }
 
 TEST(LuGreContact, ExplicitIntegratorRefusesTheLaw) {
