@@ -15,8 +15,10 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
+#include <vector>
 
 #include "ancfnet/common/error.hpp"
+#include "ancfnet/forces/target_contact.hpp"
 #include "ancfnet/model/model_builder.hpp"
 #include "ancfnet/solvers/dynamic_solver.hpp"
 
@@ -52,6 +54,7 @@ struct Slide {
   double displacement = 0.0;  // down the slope after `duration` (m)
   double speed = 0.0;         // down the slope at the end (m/s)
   double speed_half = 0.0;    // down the slope at half the duration (m/s)
+  double friction = 0.0;      // up the slope, as the contact records give it at the end (N)
 };
 
 // A 0.1 kg sphere of radius 1 cm at rest at its static penetration on the plane through the
@@ -85,6 +88,9 @@ Slide SlideBlock(double theta_degrees, const FrictionLaw& friction, double durat
   EXPECT_TRUE(result.completed) << result.message;
   slide.displacement = (state.q.segment<3>(0) - start).dot(down_slope);
   slide.speed = state.v.segment<3>(0).dot(down_slope);
+  std::vector<ContactPoint> records;
+  TargetContact(model).CollectContacts(state.q, state.v, state.contact_history, &records);
+  if (!records.empty()) slide.friction = -records[0].friction_force_W.dot(down_slope);
   return slide;
 }
 
@@ -96,6 +102,8 @@ TEST(LuGreContact, BlockBelowTheFrictionAnglePreSlidesAndSticks) {
               lugre.displacement, expected, lugre.speed);
   EXPECT_NEAR(lugre.displacement / expected, 1.0, 0.15);
   EXPECT_LT(std::abs(lugre.speed), 1e-6);
+  // At rest the bristle holds the slope load m g sin θ (the records evaluate the stored bristle).
+  EXPECT_NEAR(lugre.friction, 0.1 * kG * std::sin(theta), 1e-9);
   // The tanh law (v_r = 1 mm/s) creeps at v = v_r atanh(tan θ/g(v)), g(v) ≈ μ_s.
   constexpr double kRegularization = 1e-3;
   const Slide tanh =
