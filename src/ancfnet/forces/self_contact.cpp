@@ -122,7 +122,9 @@ void SelfContact::FindCandidates(const State& state, double h) {
   const auto& history = state.self_contact_history;
   for (const auto& [a, b] : overlaps_) {
     if (filter_.Excluded(a, b)) continue;
-    Candidate c{.a = a, .b = b};
+    Candidate c;
+    c.a = a;
+    c.b = b;
     const PairState pair = CalcPair(c, state.q, state.v, PairDetail::kGeometry);
     if (pair.gap > margin_[a] + margin_[b]) continue;
     c.direction_start = pair.direction;
