@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "ancfnet/contact/laws/bristle_friction.hpp"
 #include "ancfnet/contact/laws/tangential_friction.hpp"
 
 namespace ancfnet {
@@ -9,7 +10,7 @@ namespace ancfnet {
 ContactPairForce CalcContactPairForce(const NormalLaw& normal_law,
                                       const std::optional<FrictionLaw>& friction_law,
                                       const ContactKinematics& k, double approach_speed,
-                                      bool with_jacobian) {
+                                      const Vector3d& bristle, double step, bool with_jacobian) {
   ContactPairForce r;
   if (!(k.penetration > 0.0)) return r;
   const Vector3d& n = k.normal;
@@ -31,8 +32,15 @@ ContactPairForce CalcContactPairForce(const NormalLaw& normal_law,
   }
   if (friction_law && normal.force > 0.0) {
     const Matrix3d tangent = Matrix3d::Identity() - n * n.transpose();
-    const TangentialFriction f =
-        CalcTangentialFriction(*friction_law, tangent * k.velocity, normal.force);
+    TangentialFriction f;
+    if (friction_law->kind == FrictionLawKind::kLuGre) {
+      const TangentialBristleStep b = CalcTangentialBristleFriction(
+          *friction_law, tangent * bristle, tangent * k.velocity, normal.force, step);
+      r.bristle = b.deflection;
+      f = b.friction;
+    } else {
+      f = CalcTangentialFriction(*friction_law, tangent * k.velocity, normal.force);
+    }
     r.friction = f.force;
     r.force += f.force;
     r.dissipative += f.force;

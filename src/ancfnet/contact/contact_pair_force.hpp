@@ -34,15 +34,21 @@ struct ContactPairForce {
   Vector3d friction = Vector3d::Zero();     ///< f_t (N)
   Matrix3d dforce_dx = Matrix3d::Zero();    ///< ∂f/∂x
   Matrix3d dforce_dv = Matrix3d::Zero();    ///< ∂f/∂ẋ
+  /// LuGre law: the bristle deflection z₁ (m) at the end of the step; else zero.
+  Vector3d bristle = Vector3d::Zero();
 };
 
-/// F_n = law(δ, δ̇, v₀) along n plus regularised friction on the tangential velocity
-/// (I − n nᵀ) ẋ. Derivatives use ∂δ/∂x = −nᵀ, ∂δ̇/∂x = −ẋᵀ ∂n/∂x, ∂δ̇/∂ẋ = −nᵀ; left out: the
-/// friction force's dependence on x through the tangent plane. `approach_speed` is v₀ (its
-/// absolute value is used). Not touching (δ ≤ 0): all zero.
+/// F_n = law(δ, δ̇, v₀) along n plus friction on the tangential velocity v_t = P ẋ,
+/// P = I − n nᵀ: a regularised law (tangential_friction.hpp), or the LuGre bristle
+/// (bristle_friction.hpp) stepped over h from the pair's deflection z₀ re-projected onto the
+/// current tangent plane, P z₀ (h = 0: the force at the state, for outputs). Derivatives use
+/// ∂δ/∂x = −nᵀ, ∂δ̇/∂x = −ẋᵀ ∂n/∂x, ∂δ̇/∂ẋ = −nᵀ, ∂f_t/∂ẋ = (∂f_t/∂v_t) P; left out: the
+/// friction force's dependence on x through the tangent plane (and through P z₀).
+/// `approach_speed` is v₀ (its absolute value is used). Not touching (δ ≤ 0), or pressing with
+/// no force: no friction and z₁ = 0; not touching: all zero.
 ContactPairForce CalcContactPairForce(const NormalLaw& normal_law,
                                       const std::optional<FrictionLaw>& friction_law,
                                       const ContactKinematics& kinematics, double approach_speed,
-                                      bool with_jacobian);
+                                      const Vector3d& bristle, double step, bool with_jacobian);
 
 }  // namespace ancfnet

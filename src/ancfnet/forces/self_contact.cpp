@@ -86,8 +86,8 @@ SelfContact::PairState SelfContact::CalcPair(const Candidate& c, const VectorXd&
     k.normal_derivative = (Matrix3d::Identity() - u * u.transpose()) / d.axes.distance;
   k.velocity = r.velocity;
   const ContactSpec& spec = model_.contact();
-  r.force = CalcContactPairForce(spec.normal, spec.friction, k, c.history,
-                                 detail == PairDetail::kJacobian);
+  r.force = CalcContactPairForce(spec.normal, spec.friction, k, c.history.speed, c.history.bristle,
+                                 step_, detail == PairDetail::kJacobian);
   return r;
 }
 
@@ -103,6 +103,7 @@ bool SelfContact::OwnsClosestPoint(const SelfContactPrimitive& p, SegmentPart pa
 
 void SelfContact::FindCandidates(const State& state, double h) {
   const std::size_t n = primitives_.size();
+  step_ = h;
   boxes_.resize(n);
   margin_.resize(n);
   start_x0_.resize(n);
@@ -121,7 +122,9 @@ void SelfContact::FindCandidates(const State& state, double h) {
   const auto& history = state.self_contact_history;
   for (const auto& [a, b] : overlaps_) {
     if (filter_.Excluded(a, b)) continue;
-    Candidate c{.a = a, .b = b};
+    Candidate c;
+    c.a = a;
+    c.b = b;
     const PairState pair = CalcPair(c, state.q, state.v, PairDetail::kGeometry);
     if (pair.gap > margin_[a] + margin_[b]) continue;
     c.direction_start = pair.direction;
@@ -130,12 +133,12 @@ void SelfContact::FindCandidates(const State& state, double h) {
                                        return h.first != k.a ? h.first < k.a : h.second < k.b;
                                      });
     if (it != history.end() && it->first == a && it->second == b) {
-      c.history = it->value;
+      c.history = it->history;
     } else {
       // A pair new to the search: minus its closing speed now, or its impact speed when it
       // already touches.
       const double closing = std::max(-pair.direction.dot(pair.velocity), 0.0);
-      c.history = pair.gap < 0.0 ? std::max(closing, min_speed) : -closing;
+      c.history.speed = pair.gap < 0.0 ? std::max(closing, min_speed) : -closing;
     }
     candidates_.push_back(c);
     owners_.emplace_back(primitives_[a].owner, primitives_[b].owner);
@@ -231,12 +234,12 @@ void SelfContact::UpdateHistory(const VectorXd& q, const VectorXd& v,
   for (const Candidate& c : candidates_) {
     const PairState pair = CalcPair(c, q, v, PairDetail::kForce);
     const double closing = std::max(-pair.direction.dot(pair.velocity), 0.0);
-    double value = c.history;
+    ContactPairHistory value{.speed = c.history.speed, .bristle = pair.force.bristle};
     if (!pair.force.touching) {
-      value = -closing;  // apart: remember how fast it closes in
-    } else if (value <= 0.0) {
+      value.speed = -closing;  // apart: remember how fast it closes in
+    } else if (value.speed <= 0.0) {
       // Just touched: its impact speed is the closing speed before the touch.
-      value = std::max(std::max(-value, closing), min_speed);
+      value.speed = std::max(std::max(-value.speed, closing), min_speed);
     }
     history->push_back({c.a, c.b, value});
   }

@@ -31,7 +31,9 @@ class SelfContact {
 
   /// At the state that starts a step of size h: the pairs, not excluded, whose gap is below the
   /// sum of their search margins m = 2 h max |ẋ| + r/2 (each end's speed, the primitive's
-  /// radius), with the history of each. Allocates only while its storage grows.
+  /// radius), with the history of each; h is also the step over which the LuGre law's bristles
+  /// are advanced (TargetContact::SetStepSize; 0: the forces at the state, for outputs).
+  /// Allocates only while its storage grows.
   void FindCandidates(const State& state, double h);
   /// Owners (SystemMatrix::AddContactCouplings) of the candidate pairs.
   const std::vector<std::pair<Index, Index>>& candidate_owners() const { return owners_; }
@@ -51,7 +53,7 @@ class SelfContact {
   /// mean radius (the step was too long to resolve the impact, or the law is too soft).
   std::string CheckStep(const VectorXd& q) const;
   /// After an accepted step: the history of the candidate pairs at (q, v), as
-  /// TargetContact::UpdateHistory does it per pair.
+  /// TargetContact::UpdateHistory does it per pair (bristles included).
   void UpdateHistory(const VectorXd& q, const VectorXd& v,
                      std::vector<SelfContactPairHistory>* history) const;
 
@@ -70,7 +72,7 @@ class SelfContact {
  private:
   struct Candidate {
     int a = 0, b = 0;                              // primitives, a < b
-    double history = 0.0;                          // SelfContactPairHistory::value
+    ContactPairHistory history;                    // at the start of the step
     Vector3d direction_start = Vector3d::UnitZ();  // closest-point direction at the step start
   };
   // Axis ends of a primitive and their velocities.
@@ -110,6 +112,7 @@ class SelfContact {
   std::vector<std::pair<int, int>> overlaps_;
   std::vector<Candidate> candidates_;
   std::vector<std::pair<Index, Index>> owners_;
+  double step_ = 0.0;  // h of FindCandidates
 };
 
 }  // namespace ancfnet

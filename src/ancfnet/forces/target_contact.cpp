@@ -163,15 +163,19 @@ ContactKinematics TargetContact::CalcKinematics(const ContactTarget& target, con
 TargetContact::PairForce TargetContact::CalcPairForce(const ContactTarget& target,
                                                       const Frame& frame, const ContactProbe& probe,
                                                       const Vector3d& x, const Vector3d& x_dot,
-                                                      double approach_speed,
+                                                      const ContactPairHistory& history,
                                                       bool with_jacobian) const {
   const ContactKinematics kinematics = CalcKinematics(target, frame, probe, x, x_dot);
-  // history > 0: the impact speed frozen at first touch; ≤ 0: apart at the last accepted
-  // state, closing at −history (a constant through this step's Newton iterations).
+  // history.speed > 0: the impact speed frozen at first touch; ≤ 0: apart at the last accepted
+  // state, closing at −history.speed (a constant through this step's Newton iterations). The
+  // bristle of a target on a body turns with it: z_W = R_WB z_B, R_WB at (q, v).
+  const Vector3d bristle =
+      frame.body < 0 ? history.bristle : Vector3d(frame.pose.R_WB * history.bristle);
   const ContactSpec& spec = model_.contact();
   PairForce r;
-  static_cast<ContactPairForce&>(r) =
-      CalcContactPairForce(spec.normal, spec.friction, kinematics, approach_speed, with_jacobian);
+  static_cast<ContactPairForce&>(r) = CalcContactPairForce(
+      spec.normal, spec.friction, kinematics, history.speed, bristle, step_, with_jacobian);
+  if (frame.body >= 0) r.bristle = frame.pose.R_WB.transpose() * r.bristle;
   r.surface_point = x - (probe.radius - kinematics.penetration) * kinematics.normal;
   r.normal = kinematics.normal;
   return r;
@@ -201,8 +205,8 @@ void TargetContact::FindBodyCouplings(const VectorXd& q, const VectorXd& v, doub
 
 template <class Visit>
 void TargetContact::ForEachTouchingPair(const VectorXd& q, const VectorXd& v,
-                                        const std::vector<double>& history, bool with_jacobian,
-                                        Visit&& visit) const {
+                                        const std::vector<ContactPairHistory>& history,
+                                        bool with_jacobian, Visit&& visit) const {
   const auto& targets = model_.contact().targets;
   for (std::size_t t = 0; t < targets.size(); ++t) frames_[t] = CalcFrame(targets[t], q, v);
   for (std::size_t p = 0; p < probes_.size(); ++p) {
@@ -219,7 +223,7 @@ void TargetContact::ForEachTouchingPair(const VectorXd& q, const VectorXd& v,
 }
 
 void TargetContact::AddForces(const VectorXd& q, const VectorXd& v,
-                              const std::vector<double>& history, Workspace& ws) const {
+                              const std::vector<ContactPairHistory>& history, Workspace& ws) const {
   ws.contact_energy = 0.0;
   ForEachTouchingPair(q, v, history, false, [&](const ContactProbe& probe, const PairForce& f) {
     ws.contact_energy += f.energy;
@@ -250,8 +254,8 @@ void TargetContact::AddForces(const VectorXd& q, const VectorXd& v,
 }
 
 void TargetContact::AddJacobian(const VectorXd& q, const VectorXd& v,
-                                const std::vector<double>& history, const IterationWeights& weights,
-                                SystemMatrix* matrix) const {
+                                const std::vector<ContactPairHistory>& history,
+                                const IterationWeights& weights, SystemMatrix* matrix) const {
   ForEachTouchingPair(q, v, history, true, [&](const ContactProbe& probe, const PairForce& f) {
     // Q = −Sᵀ f(x − x_s): ∂Q/∂e = −Sᵀ (∂f/∂x) S, with B = −(c_K ∂f/∂x + c_C ∂f/∂ẋ).
     const Matrix3d block = -(weights.stiffness * f.dforce_dx + weights.damping * f.dforce_dv);
@@ -287,21 +291,29 @@ void TargetContact::AddJacobian(const VectorXd& q, const VectorXd& v,
 }
 
 void TargetContact::UpdateHistory(const VectorXd& q, const VectorXd& v,
-                                  std::vector<double>* history) const {
+                                  std::vector<ContactPairHistory>* history) const {
   const auto& targets = model_.contact().targets;
+  const bool bristles =
+      model_.contact().friction && model_.contact().friction->kind == FrictionLawKind::kLuGre;
   for (std::size_t t = 0; t < targets.size(); ++t) frames_[t] = CalcFrame(targets[t], q, v);
   for (std::size_t p = 0; p < probes_.size(); ++p) {
     Vector3d x, x_dot;
     Locate(probes_[p], q, v, &x, &x_dot);
     for (std::size_t t = 0; t < targets.size(); ++t) {
-      double& stored = (*history)[p * targets.size() + t];
+      ContactPairHistory& stored = (*history)[p * targets.size() + t];
       const ContactKinematics k = CalcKinematics(targets[t], frames_[t], probes_[p], x, x_dot);
       const double closing = std::max(-k.normal.dot(k.velocity), 0.0);
+      // The bristle at the end of the step, from the history at its start.
+      stored.bristle =
+          bristles
+              ? CalcPairForce(targets[t], frames_[t], probes_[p], x, x_dot, stored, false).bristle
+              : Vector3d::Zero();
       if (!(k.penetration > 0.0)) {
-        stored = -closing;  // apart: remember how fast it closes in
-      } else if (stored <= 0.0) {
+        stored.speed = -closing;  // apart: remember how fast it closes in
+      } else if (stored.speed <= 0.0) {
         // Just touched: its impact speed is the closing speed before the touch.
-        stored = std::max(std::max(-stored, closing), model_.contact().normal.min_approach_speed);
+        stored.speed =
+            std::max(std::max(-stored.speed, closing), model_.contact().normal.min_approach_speed);
       }
     }
   }
@@ -336,8 +348,8 @@ std::string TargetContact::CheckStep(const VectorXd& q_start, const VectorXd& v_
   return {};
 }
 
-TargetContact::Summary TargetContact::Summarize(const VectorXd& q, const VectorXd& v,
-                                                const std::vector<double>& history) const {
+TargetContact::Summary TargetContact::Summarize(
+    const VectorXd& q, const VectorXd& v, const std::vector<ContactPairHistory>& history) const {
   Summary s;
   ForEachTouchingPair(q, v, history, false, [&](const ContactProbe&, const ContactPairForce& f) {
     ++s.active;
@@ -348,7 +360,7 @@ TargetContact::Summary TargetContact::Summarize(const VectorXd& q, const VectorX
 }
 
 void TargetContact::CollectContacts(const VectorXd& q, const VectorXd& v,
-                                    const std::vector<double>& history,
+                                    const std::vector<ContactPairHistory>& history,
                                     std::vector<ContactPoint>* out) const {
   ForEachTouchingPair(q, v, history, false, [&](const ContactProbe& probe, const PairForce& f) {
     out->push_back({.point_W = f.surface_point,

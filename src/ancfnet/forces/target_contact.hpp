@@ -13,6 +13,7 @@
 #include "ancfnet/contact/contact_point.hpp"
 #include "ancfnet/model/model.hpp"
 #include "ancfnet/model/rigid_body_kinematics.hpp"
+#include "ancfnet/state/state.hpp"
 #include "ancfnet/state/workspace.hpp"
 
 namespace ancfnet {
@@ -41,6 +42,11 @@ class TargetContact {
   /// bodies are computed with, R_WB = R_ref exp(ψ̃); it must outlive the calls. Unset: the
   /// bodies' initial orientations.
   void SetBodyRotations(const std::vector<Matrix3d>* rotations) { body_rotation_ = rotations; }
+  /// The size h (s) of the step being taken, over which the LuGre law's bristles are advanced
+  /// (ContactPairHistory::bristle → its end-of-step value) in AddForces, AddJacobian and
+  /// UpdateHistory. 0 (the default): the forces at the state with the history as it is, for
+  /// outputs.
+  void SetStepSize(double h) { step_ = h; }
   /// Owner pairs (SystemMatrix::AddContactCouplings) of the probes within reach of a target
   /// carried by a body during a step of size h from (q, v): gap < r + 2 h |ẋ_rel| + r/2. Their
   /// Jacobian blocks that couple the probe and the body go into those couplings (a pair not
@@ -50,15 +56,14 @@ class TargetContact {
 
   /// ws.internal_force −= Sᵀ f and ws.viscous_force −= Sᵀ f_dissipative for every touching pair
   /// (and += Gᵀ f on the body carrying the target, G its point-velocity map at the contact point);
-  /// ws.contact_energy = Σ ∫ F_elastic dδ. `history` holds each pair's impact speed v₀ (> 0,
-  /// frozen while it touches), or minus its closing speed while apart (≤ 0), which is the v₀ of
-  /// a pair that touches during the step.
-  void AddForces(const VectorXd& q, const VectorXd& v, const std::vector<double>& history,
-                 Workspace& ws) const;
+  /// ws.contact_energy = Σ ∫ F_elastic dδ. `history` is each pair's at the start of the step.
+  void AddForces(const VectorXd& q, const VectorXd& v,
+                 const std::vector<ContactPairHistory>& history, Workspace& ws) const;
   /// matrix += c_K ∂Q/∂q + c_C ∂Q/∂q̇ of the contact forces. Left out: the friction force's
   /// dependence on the positions through the tangent plane.
-  void AddJacobian(const VectorXd& q, const VectorXd& v, const std::vector<double>& history,
-                   const IterationWeights& weights, SystemMatrix* matrix) const;
+  void AddJacobian(const VectorXd& q, const VectorXd& v,
+                   const std::vector<ContactPairHistory>& history, const IterationWeights& weights,
+                   SystemMatrix* matrix) const;
   /// Empty when a converged step from (q_start, v_start) to (q, v) may be accepted, else why not:
   /// a probe sank into a target by more than ContactSpec::penetration_increment of its radius
   /// during the step (δ − max(δ_start, 0) > η r).
@@ -66,8 +71,10 @@ class TargetContact {
                         const VectorXd& v) const;
   /// After an accepted step: a pair apart stores minus its closing speed; a pair that has just
   /// touched freezes its impact speed (the larger of the closing speeds before and now, at least
-  /// the law's minimum); a pair in contact keeps it.
-  void UpdateHistory(const VectorXd& q, const VectorXd& v, std::vector<double>* history) const;
+  /// the law's minimum); a pair in contact keeps it. The LuGre bristle of a touching pair is
+  /// advanced over the step (SetStepSize), that of a pair apart is zero.
+  void UpdateHistory(const VectorXd& q, const VectorXd& v,
+                     std::vector<ContactPairHistory>* history) const;
 
   /// Number of touching pairs, total normal force (N) and largest penetration (m) at (q, v).
   struct Summary {
@@ -75,13 +82,15 @@ class TargetContact {
     double normal_force = 0.0;
     double max_penetration = 0.0;
   };
-  Summary Summarize(const VectorXd& q, const VectorXd& v, const std::vector<double>& history) const;
+  Summary Summarize(const VectorXd& q, const VectorXd& v,
+                    const std::vector<ContactPairHistory>& history) const;
 
   /// Appends a record of every touching (probe, target) pair at (q, v) to `out`, probes in the
   /// order of MakeContactProbes and, for each, targets in the order of ContactSpec::targets. The
   /// forces are those AddForces applies (force_W = F n + f_t on the probe). For outputs: it
   /// allocates as `out` grows.
-  void CollectContacts(const VectorXd& q, const VectorXd& v, const std::vector<double>& history,
+  void CollectContacts(const VectorXd& q, const VectorXd& v,
+                       const std::vector<ContactPairHistory>& history,
                        std::vector<ContactPoint>* out) const;
 
  private:
@@ -104,7 +113,7 @@ class TargetContact {
                                    const Vector3d& x_dot) const;
   PairForce CalcPairForce(const ContactTarget& target, const Frame& frame,
                           const ContactProbe& probe, const Vector3d& x, const Vector3d& x_dot,
-                          double approach_speed, bool with_jacobian) const;
+                          const ContactPairHistory& history, bool with_jacobian) const;
   // Owner of a probe's blocks in SystemMatrix contact couplings.
   Index ProbeOwner(const ContactProbe& probe) const;
   void Locate(const ContactProbe& probe, const VectorXd& q, const VectorXd& v, Vector3d* x,
@@ -112,12 +121,14 @@ class TargetContact {
   // Calls visit(probe, force) for every touching (probe, target) pair at (q, v); force.target is
   // the target's index.
   template <class Visit>
-  void ForEachTouchingPair(const VectorXd& q, const VectorXd& v, const std::vector<double>& history,
-                           bool with_jacobian, Visit&& visit) const;
+  void ForEachTouchingPair(const VectorXd& q, const VectorXd& v,
+                           const std::vector<ContactPairHistory>& history, bool with_jacobian,
+                           Visit&& visit) const;
 
   const Model& model_;
   std::vector<ContactProbe> probes_;
   const std::vector<Matrix3d>* body_rotation_ = nullptr;
+  double step_ = 0.0;
   mutable std::vector<Frame> frames_;  // per target, at the (q, v) being evaluated
 };
 

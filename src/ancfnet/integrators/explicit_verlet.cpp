@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "ancfnet/common/error.hpp"
 #include "ancfnet/model/rigid_body_kinematics.hpp"
 
 namespace ancfnet {
@@ -17,6 +18,11 @@ ExplicitVerletIntegrator::ExplicitVerletIntegrator(const Model& model)
       self_contact_(model),
       ws_(model),
       dofs_(DofMap::FreeCoordinates(model)) {
+  const auto& friction = model.contact().friction;
+  if (friction && friction->kind == FrictionLawKind::kLuGre)
+    throw InputError(
+        "contact friction: the LuGre law needs an implicit integrator (generalized_alpha or "
+        "implicit_midpoint), not explicit_verlet");
   contact_.SetBodyRotations(&ws_.body_rotation);
 }
 

@@ -15,6 +15,8 @@ namespace ancfnet {
 
 class ExplicitVerletIntegrator {
  public:
+  /// Throws InputError for a model whose contact friction is the LuGre law: its stiff bristle
+  /// (natural frequency √(σ₀ g) for a block) needs the implicit integrators.
   explicit ExplicitVerletIntegrator(const Model& model);
 
   /// Factorises the mass matrix and sets a₀ = M⁻¹ (Q_ext − Q_int) with the state's broken links.
@@ -39,7 +41,7 @@ class ExplicitVerletIntegrator {
   DampingModel damping_;
   TargetContact contact_;
   SelfContact self_contact_;
-  std::vector<double> contact_history_;  // the state's, at the start of the step
+  std::vector<ContactPairHistory> contact_history_;  // the state's, at the start of the step
   Workspace ws_;
   DofMap dofs_;
   SparseLinearSolver mass_solver_;

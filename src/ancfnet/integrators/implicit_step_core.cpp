@@ -42,6 +42,7 @@ void ImplicitStepCore::BeginStep(double h, const State& state) {
   ws_.body_rotation = state.body_rotation;
   if (h != last_h_) newton_.InvalidateJacobian();
   last_h_ = h;
+  contact_.SetStepSize(h);
   if (!self_contact_.empty()) {
     self_contact_.FindCandidates(state, h);
     if (iteration_matrix_.AddContactCouplings(self_contact_.candidate_owners()))
@@ -90,7 +91,10 @@ void ImplicitStepCore::CalcForces(const VectorXd& q, const VectorXd& v) {
 }
 
 void ImplicitStepCore::AcceptStep(State* state) {
-  if (!contact_.empty()) contact_.UpdateHistory(state->q, state->v, &state->contact_history);
+  if (!contact_.empty()) {
+    contact_.UpdateHistory(state->q, state->v, &state->contact_history);
+    contact_.SetStepSize(0.0);  // ws() forces from now on: those of the accepted state
+  }
   if (!self_contact_.empty())
     self_contact_.UpdateHistory(state->q, state->v, &state->self_contact_history);
   RebaseBodyRotations(model_, state);

@@ -23,7 +23,8 @@ class ImplicitStepCore {
   bool Initialize(State* state);
   /// Saves the state at t_n (its contact history and body rotations included; ws() evaluates the
   /// bodies with the latter until AcceptStep); drops the factorisation when h changed (the
-  /// iteration matrix depends on h). Finds the self-contact pairs to watch during the step and
+  /// iteration matrix depends on h; so do the contacts' LuGre bristles, stepped over h). Finds
+  /// the self-contact pairs to watch during the step and
   /// adds their couplings to the iteration matrix (a new pattern is analysed anew).
   void BeginStep(double h, const State& state);
   /// Empty when a converged step to (q, v) may be accepted, else why not (self-contact search

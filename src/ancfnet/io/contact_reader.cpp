@@ -41,23 +41,38 @@ NormalLaw ReadNormalLaw(const YamlValue& value) {
 
 FrictionLaw ReadFriction(const YamlValue& value) {
   const YamlMap map = value.AsMap();
-  if (map.Get("type").AsChoice({"tanh", "ambrosio"}) == 0) {
+  const std::size_t type = map.Get("type").AsChoice({"tanh", "ambrosio", "lugre"});
+  const auto number_or = [&](const char* key, double fallback, bool positive) {
+    if (!map.Find(key)) return fallback;
+    return positive ? map.Get(key).AsPositive() : map.Get(key).AsNonNegative();
+  };
+  if (type == 1) {
+    map.CheckKeys({"type", "coefficient", "ramp_start_speed", "ramp_end_speed"});
+    const double coefficient = map.Get("coefficient").AsNonNegative();
+    const double start = number_or("ramp_start_speed", 1e-4, false);
+    const double end = number_or("ramp_end_speed", 1e-3, true);
+    return value.Locate([&] { return MakeAmbrosioFriction(coefficient, start, end); });
+  }
+  if (type == 0) {
     map.CheckKeys({"type", "static", "kinetic", "regularization_speed", "stribeck_speed"});
-    const double kinetic = map.Get("kinetic").AsNonNegative();
-    const double statics = map.Find("static") ? map.Get("static").AsNonNegative() : kinetic;
-    const double regularization =
-        map.Find("regularization_speed") ? map.Get("regularization_speed").AsPositive() : 1e-3;
-    const double stribeck =
-        map.Find("stribeck_speed") ? map.Get("stribeck_speed").AsPositive() : 1e-2;
+  } else {
+    map.CheckKeys({"type", "static", "kinetic", "stribeck_speed", "bristle_stiffness",
+                   "bristle_damping", "viscous_damping"});
+  }
+  const double kinetic =
+      type == 0 ? map.Get("kinetic").AsNonNegative() : map.Get("kinetic").AsPositive();
+  const double statics = number_or("static", kinetic, false);
+  const double stribeck = number_or("stribeck_speed", 1e-2, true);
+  if (type == 0) {
+    const double regularization = number_or("regularization_speed", 1e-3, true);
     return value.Locate(
         [&] { return MakeTanhFriction(statics, kinetic, regularization, stribeck); });
   }
-  map.CheckKeys({"type", "coefficient", "ramp_start_speed", "ramp_end_speed"});
-  const double coefficient = map.Get("coefficient").AsNonNegative();
-  const double start =
-      map.Find("ramp_start_speed") ? map.Get("ramp_start_speed").AsNonNegative() : 1e-4;
-  const double end = map.Find("ramp_end_speed") ? map.Get("ramp_end_speed").AsPositive() : 1e-3;
-  return value.Locate([&] { return MakeAmbrosioFriction(coefficient, start, end); });
+  const double sigma0 = map.Get("bristle_stiffness").AsPositive();
+  const double sigma1 = number_or("bristle_damping", 0.0, false);
+  const double sigma2 = number_or("viscous_damping", 0.0, false);
+  return value.Locate(
+      [&] { return MakeLuGreFriction(statics, kinetic, stribeck, sigma0, sigma1, sigma2); });
 }
 
 // A unit axis (default e_z when absent); a zero vector is refused.

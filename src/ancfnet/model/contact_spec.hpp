@@ -42,7 +42,9 @@ struct ContactTarget {
 struct ContactSpec {
   std::vector<ContactTarget> targets;
   NormalLaw normal;
-  std::optional<FrictionLaw> friction;  ///< regularised laws (Ambrósio, tanh); none: frictionless
+  /// Regularised laws (Ambrósio, tanh) or the LuGre bristle law (implicit integrators only);
+  /// none: frictionless.
+  std::optional<FrictionLaw> friction;
   /// Inspection spheres per cable element, at ξ = (j + ½)/n; 0: automatic, one per thread
   /// diameter of element length, between 2 and 32.
   int points_per_element = 0;

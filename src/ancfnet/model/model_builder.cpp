@@ -97,8 +97,6 @@ void ModelBuilder::SetModalDamping(const ModalDamping& damping) {
 void ModelBuilder::SetContact(const ContactSpec& contact) {
   ValidateNormalLaw(contact.normal);
   if (contact.friction) ValidateFrictionLaw(*contact.friction);
-  if (contact.friction && contact.friction->kind == FrictionLawKind::kLuGre)
-    throw InputError("contact friction: the bristle (LuGre) law is not available for contact yet");
   if (contact.points_per_element < 0 || contact.points_per_element > 1000)
     throw InputError("contact: points_per_element must be 0 (automatic) … 1000");
   if (contact.capsules_per_element < 0 || contact.capsules_per_element > 1000)

@@ -11,7 +11,7 @@ State MakeInitialState(const Model& model) {
   state.v = model.initial_velocities();
   state.a = VectorXd::Zero(model.num_dofs());
   state.link_broken.assign(model.links().size(), 0);
-  state.contact_history.assign(static_cast<std::size_t>(CountContactPairs(model)), 0.0);
+  state.contact_history.assign(static_cast<std::size_t>(CountContactPairs(model)), {});
   for (const RigidBody& body : model.rigid_bodies())
     state.body_rotation.push_back(body.initial_orientation);
   return state;

@@ -10,13 +10,24 @@ namespace ancfnet {
 
 class Model;
 
-/// What a pair of self-contact primitives (forces/self_contact.hpp) remembers between steps:
-/// like State::contact_history, its impact speed (> 0) while it touches, or minus its closing
-/// speed while apart (≤ 0). Kept for the pairs found near each other at the last accepted step.
+/// What a contact pair remembers between steps (forces/target_contact.hpp, self_contact.hpp).
+struct ContactPairHistory {
+  /// Its impact speed v₀ (m/s, > 0, frozen while it touches), or minus its closing speed while
+  /// apart (≤ 0), which is the v₀ of a pair that touches during the step.
+  double speed = 0.0;
+  /// The bristle deflection z (m) of the LuGre friction law at the end of the last accepted
+  /// step, a vector in the tangent plane; zero while apart and without that law. In world
+  /// coordinates, except for a target carried by a rigid body: in the body's frame (z_W = R_WB
+  /// z), so that it turns with the body.
+  Vector3d bristle = Vector3d::Zero();
+};
+
+/// The history of a pair of self-contact primitives, kept for the pairs found near each other
+/// at the last accepted step.
 struct SelfContactPairHistory {
   int first = 0;   ///< primitive, first < second
   int second = 0;  ///< primitive
-  double value = 0.0;
+  ContactPairHistory history;
 };
 
 /// Time t (s) and the generalised coordinates q, velocities v = q̇ and accelerations a = q̈ of
@@ -29,9 +40,8 @@ struct State {
   /// Per spring-damper link of the model: 1 once it has failed (its tension passed its
   /// breaking force, or that of the cable it holds); it then carries no force.
   std::vector<char> link_broken;
-  /// Per (contact probe, target) pair: its impact speed (m/s, > 0) while it touches, minus its
-  /// closing speed while apart (forces/target_contact.hpp).
-  std::vector<double> contact_history;
+  /// Per (contact probe, target) pair (forces/target_contact.hpp).
+  std::vector<ContactPairHistory> contact_history;
   /// Sorted by (first, second).
   std::vector<SelfContactPairHistory> self_contact_history;
   /// Per rigid body: its reference orientation R_ref, R_WB = R_ref exp(ψ̃) with ψ the body's

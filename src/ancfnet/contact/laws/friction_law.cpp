@@ -5,6 +5,7 @@
 #include <string>
 
 #include "ancfnet/common/error.hpp"
+#include "ancfnet/contact/laws/bristle_friction.hpp"
 
 namespace ancfnet {
 namespace {
@@ -74,23 +75,14 @@ BristleStep FrictionLaw::StepBristle(double z0, double v, double normal_force, d
     throw std::logic_error("FrictionLaw::StepBristle: only a LuGre law has a bristle state");
   }
   if (!(h > 0.0)) throw std::logic_error("FrictionLaw::StepBristle: the step must be positive");
-  const double s = std::abs(v);
-  double dg = 0.0;
-  const double g = CalcStribeck(s, &dg);
-  const double sigma0 = bristle_stiffness;
-  // z₁ = num/den with num = z₀ + h v, den = 1 + h σ₀ s/g(s).
-  const double num = z0 + h * v;
-  const double den = 1.0 + h * sigma0 * s / g;
-  const double dden_dv = h * sigma0 * Sign(v) * (g - s * dg) / (g * g);
+  // The slip along one axis of the tangent plane.
+  const TangentialBristleStep step = CalcTangentialBristleFriction(
+      *this, Vector3d(z0, 0.0, 0.0), Vector3d(v, 0.0, 0.0), normal_force, h);
   BristleStep out;
-  out.deflection = num / den;
-  const double dz_dv = (h * den - num * dden_dv) / (den * den);
-  const double z_dot = (out.deflection - z0) / h;
-  const double n = normal_force > 0.0 ? normal_force : 0.0;
-  const double bristle = sigma0 * out.deflection + bristle_damping * z_dot;
-  out.friction.force = -(n * bristle + viscous_damping * v);
-  out.friction.dforce_dvelocity = -(n * (sigma0 + bristle_damping / h) * dz_dv + viscous_damping);
-  out.friction.dforce_dnormal = normal_force > 0.0 ? -bristle : 0.0;
+  out.deflection = step.deflection.x();
+  out.friction.force = step.friction.force.x();
+  out.friction.dforce_dvelocity = step.friction.dforce_dvelocity(0, 0);
+  out.friction.dforce_dnormal = step.friction.dforce_dnormal.x();
   return out;
 }
 

@@ -65,10 +65,11 @@ struct FrictionLaw {
 
   /// kLuGre: advances z over a step h (s) by implicit Euler with the end-of-step velocity v,
   ///   z₁ = (z₀ + h v)/(1 + h σ₀ |v|/g(|v|)),   ż = (z₁ − z₀)/h,
-  /// exact for the stiff bristle at any h, and returns z₁ and F_t(z₁, ż, v) with
+  /// stable for the stiff bristle at any h, and returns z₁ and F_t(z₁, ż, v) with
   /// ∂F_t/∂v = −(N (σ₀ + σ₁/h) ∂z₁/∂v + σ₂), the derivative an implicit integrator needs.
-  /// |v| is not differentiable at v = 0, where ∂|v|/∂v is taken as 0. Throws std::logic_error
-  /// unless kind is kLuGre and h > 0.
+  /// |v| is not differentiable at v = 0, where ∂|v|/∂v is taken as 0. The one-axis case of
+  /// CalcTangentialBristleFriction (bristle_friction.hpp). Throws std::logic_error unless kind
+  /// is kLuGre and h > 0.
   BristleStep StepBristle(double deflection, double velocity, double normal_force,
                           double step) const;
 };

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <optional>
+
 #include "ancfnet/assembly/system_matrix.hpp"
 #include "ancfnet/forces/target_contact.hpp"
 #include "ancfnet/forces/test/central_difference_jacobian.hpp"
@@ -13,7 +15,7 @@
 namespace ancfnet {
 namespace {
 
-Model MakeCableOnATumblingBox(bool friction) {
+Model MakeCableOnATumblingBox(const std::optional<FrictionLaw>& friction) {
   Material nylon{.youngs_modulus = 3e9, .density = 1140};
   ModelBuilder builder;
   const Matrix3d turn = Eigen::AngleAxisd(0.4, Vector3d(1, 2, 3).normalized()).toRotationMatrix();
@@ -36,7 +38,7 @@ Model MakeCableOnATumblingBox(bool friction) {
                     .properties = MakeCableProperties(nylon, MakeCircleSection(0.004))});
   ContactSpec spec;
   spec.normal = MakeDissipativeContactLaw(NormalLawKind::kCarvalhoMartins, 1e6, 0.4);
-  if (friction) spec.friction = MakeTanhFriction(0.4, 0.3, 1e-2, 1e-1);
+  spec.friction = friction;
   spec.points_per_element = 5;
   ContactTarget box;
   box.kind = ContactTarget::Kind::kBox;
@@ -47,12 +49,16 @@ Model MakeCableOnATumblingBox(bool friction) {
   return builder.Build();
 }
 
-void ExpectJacobiansMatch(const Model& model, bool check_stiffness, double tolerance) {
-  const TargetContact contact(model);
+// `step` > 0: the LuGre bristles are stepped over it from `bristle_B`, in the body's frame.
+void ExpectJacobiansMatch(const Model& model, bool check_stiffness, double tolerance,
+                          double step = 0.0, const Vector3d& bristle_B = Vector3d::Zero()) {
+  TargetContact contact(model);
+  contact.SetStepSize(step);
   const State state = MakeInitialState(model);
   VectorXd v = state.v;
   for (Index i = 0; i < 6 * model.num_nodes(); ++i) v[i] += 0.01 * std::sin(1.7 * i + 0.3);
-  std::vector<double> history(static_cast<std::size_t>(CountContactPairs(model)), -0.2);
+  std::vector<ContactPairHistory> history(static_cast<std::size_t>(CountContactPairs(model)),
+                                          {.speed = -0.2, .bristle = bristle_B});
   const auto forces = [&](const VectorXd& x, const VectorXd& x_dot) {
     Workspace ws(model);
     ws.internal_force.setZero();
@@ -92,8 +98,12 @@ void ExpectJacobiansMatch(const Model& model, bool check_stiffness, double toler
 TEST(BodyTargetContact, JacobiansMatchFiniteDifferences) {
   // Left out of the stiffness: the change of G and of the body's moment arm with the rotation,
   // of relative size F/(k ℓ).
-  ExpectJacobiansMatch(MakeCableOnATumblingBox(false), true, 1e-2);
-  ExpectJacobiansMatch(MakeCableOnATumblingBox(true), false, 1e-6);
+  ExpectJacobiansMatch(MakeCableOnATumblingBox(std::nullopt), true, 1e-2);
+  ExpectJacobiansMatch(MakeCableOnATumblingBox(MakeTanhFriction(0.4, 0.3, 1e-2, 1e-1)), false,
+                       1e-6);
+  // The LuGre law, its bristles turned with the body (z_W = R_WB z_B).
+  ExpectJacobiansMatch(MakeCableOnATumblingBox(MakeLuGreFriction(0.4, 0.3, 1e-2, 1e4, 50.0, 0.1)),
+                       false, 1e-6, 1e-3, Vector3d(2e-5, -1e-5, 0.0));
 }
 
 }  // namespace

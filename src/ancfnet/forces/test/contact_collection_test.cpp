@@ -33,7 +33,7 @@ TEST(CollectContacts, PointMassSlidingOnAPlane) {
   const TargetContact contact(model);
   const VectorXd q = model.initial_positions();
   const VectorXd v = Vector3d(0.5, 0.0, -0.1);
-  const std::vector<double> history(2, 0.0);
+  const std::vector<ContactPairHistory> history(2);
   std::vector<ContactPoint> records;
   contact.CollectContacts(q, v, history, &records);
   ASSERT_EQ(records.size(), 1u);
@@ -74,7 +74,8 @@ TEST(CollectContacts, RecordsAddUpToTheAppliedForces) {
   const VectorXd q = model.initial_positions();
   VectorXd v(model.num_dofs());
   for (Index i = 0; i < v.size(); ++i) v[i] = 0.01 * std::sin(1.7 * i + 0.3);
-  const std::vector<double> history(static_cast<std::size_t>(CountContactPairs(model)), 0.2);
+  const std::vector<ContactPairHistory> history(static_cast<std::size_t>(CountContactPairs(model)),
+                                                {.speed = 0.2});
   std::vector<ContactPoint> records;
   contact.CollectContacts(q, v, history, &records);
   ASSERT_GE(records.size(), 2u);

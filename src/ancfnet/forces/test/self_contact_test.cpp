@@ -1,11 +1,14 @@
 // Self-contact forces: two crossing cables pressed into each other (capsule chains, so slopes
 // take part) and a bead (point-mass sphere) on a thread. The forces are the exact gradient of the
 // contact energy (the closest points are stationary), and the Jacobians match central differences
-// up to the moving closest points' term that is left out (relative size δ / capsule length).
+// up to the moving closest points' term that is left out (relative size δ / capsule length); the
+// velocity Jacobian is exact with the tanh and the LuGre friction laws.
 
 #include "ancfnet/forces/self_contact.hpp"
 
 #include <gtest/gtest.h>
+
+#include <optional>
 
 #include "ancfnet/assembly/system_matrix.hpp"
 #include "ancfnet/forces/test/central_difference_jacobian.hpp"
@@ -16,7 +19,7 @@ namespace {
 
 constexpr double kRadius = 0.002;
 
-Model MakeCrossingCables(bool friction, bool damping) {
+Model MakeCrossingCables(const std::optional<FrictionLaw>& friction, bool damping) {
   Material nylon{.youngs_modulus = 3e9, .density = 1140};
   const CableProperties p = MakeCableProperties(nylon, MakeCircleSection(2 * kRadius));
   ModelBuilder builder;
@@ -36,7 +39,7 @@ Model MakeCrossingCables(bool friction, bool damping) {
   ContactSpec spec;
   spec.normal = damping ? MakeDissipativeContactLaw(NormalLawKind::kCarvalhoMartins, 1e5, 0.4)
                         : MakeHertzContactLaw(1e7);
-  if (friction) spec.friction = MakeTanhFriction(0.4, 0.3, 1e-2, 1e-1);
+  spec.friction = friction;
   spec.self_contact = true;
   spec.capsules_per_element = 3;
   spec.point_mass_radius = kRadius;
@@ -45,8 +48,15 @@ Model MakeCrossingCables(bool friction, bool damping) {
 }
 
 struct Fixture {
-  explicit Fixture(const Model& m) : model(m), contact(m), state(MakeInitialState(m)) {
+  // `bristle` (if not zero): the LuGre deflection every pair starts the step with.
+  explicit Fixture(const Model& m, const Vector3d& bristle = Vector3d::Zero())
+      : model(m), contact(m), state(MakeInitialState(m)) {
     for (Index i = 0; i < state.v.size(); ++i) state.v[i] = 0.01 * std::sin(1.7 * i + 0.3);
+    const int n = static_cast<int>(contact.primitives().size());
+    if (bristle != Vector3d::Zero())
+      for (int a = 0; a < n; ++a)
+        for (int b = a + 1; b < n; ++b)
+          state.self_contact_history.push_back({a, b, {.speed = 0.3, .bristle = bristle}});
     contact.FindCandidates(state, 1e-3);
   }
   VectorXd Forces(const VectorXd& q, const VectorXd& v, double* energy = nullptr) const {
@@ -64,7 +74,7 @@ struct Fixture {
 };
 
 TEST(SelfContact, ForcesAreTheGradientOfTheContactEnergy) {
-  const Model model = MakeCrossingCables(false, false);
+  const Model model = MakeCrossingCables(std::nullopt, false);
   const Fixture f(model);
   const SelfContact::Summary s = f.contact.Summarize(f.state.q, f.state.v);
   ASSERT_EQ(s.active, 2);  // a–b and bead–a
@@ -92,8 +102,9 @@ TEST(SelfContact, ForcesAreTheGradientOfTheContactEnergy) {
 }
 
 void ExpectJacobiansMatchFiniteDifferences(const Model& model, bool check_stiffness,
-                                           double tolerance) {
-  const Fixture f(model);
+                                           double tolerance,
+                                           const Vector3d& bristle = Vector3d::Zero()) {
+  const Fixture f(model, bristle);
   const DofMap all = DofMap::AllCoordinates(model);
   for (const IterationWeights weights :
        {IterationWeights{.mass = 0, .damping = 0, .stiffness = 1},
@@ -116,9 +127,15 @@ void ExpectJacobiansMatchFiniteDifferences(const Model& model, bool check_stiffn
 
 TEST(SelfContact, JacobiansMatchFiniteDifferences) {
   // Left out of the stiffness: the closest points' motion, of relative size δ/ℓ ≈ 1e-2.
-  ExpectJacobiansMatchFiniteDifferences(MakeCrossingCables(false, true), true, 3e-2);
+  ExpectJacobiansMatchFiniteDifferences(MakeCrossingCables(std::nullopt, true), true, 3e-2);
   // The velocity Jacobian is exact, friction included.
-  ExpectJacobiansMatchFiniteDifferences(MakeCrossingCables(true, true), false, 1e-6);
+  ExpectJacobiansMatchFiniteDifferences(
+      MakeCrossingCables(MakeTanhFriction(0.4, 0.3, 1e-2, 1e-1), true), false, 1e-6);
+  // And with the LuGre bristles stepped over h = 1 ms from a deflection z₀ (re-projected onto
+  // each pair's tangent plane).
+  ExpectJacobiansMatchFiniteDifferences(
+      MakeCrossingCables(MakeLuGreFriction(0.4, 0.3, 1e-2, 1e4, 50.0, 0.1), true), false, 1e-6,
+      Vector3d(2e-5, -1e-5, 1e-5));
 }
 
 TEST(SelfContactFilter, LeavesOutNeighboursOnAThreadAndAtAKnot) {

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <optional>
 
 #include "ancfnet/contact/mesh/icosphere.hpp"
 #include "ancfnet/forces/test/central_difference_jacobian.hpp"
@@ -16,7 +17,9 @@
 namespace ancfnet {
 namespace {
 
-Model MakePressedCable(ContactTarget target, bool friction) {
+const FrictionLaw kTanh = MakeTanhFriction(0.4, 0.3, 1e-2, 1e-1);
+
+Model MakePressedCable(ContactTarget target, const std::optional<FrictionLaw>& friction) {
   Material nylon{.youngs_modulus = 3e9, .density = 1140};
   ModelBuilder builder;
   builder.AddCable({.name = "rope",
@@ -27,7 +30,7 @@ Model MakePressedCable(ContactTarget target, bool friction) {
   builder.AddPointMass("bead", 0.01, Vector3d(0.05, 0.02, 0.3009));
   ContactSpec spec;
   spec.normal = MakeDissipativeContactLaw(NormalLawKind::kCarvalhoMartins, 1e6, 0.4);
-  if (friction) spec.friction = MakeTanhFriction(0.4, 0.3, 1e-2, 1e-1);
+  spec.friction = friction;
   spec.points_per_element = 5;
   spec.point_mass_radius = 0.002;
   spec.targets.push_back(target);
@@ -36,14 +39,21 @@ Model MakePressedCable(ContactTarget target, bool friction) {
 }
 
 // With friction on a curved target the stiffness leaves out the turning of the tangent plane, so
-// `check_stiffness` is false there.
-void ExpectJacobiansMatchFiniteDifferences(const Model& model, bool check_stiffness = true) {
-  const TargetContact contact(model);
+// `check_stiffness` is false there. `step` > 0: the LuGre bristles are stepped over it from the
+// deflection `bristle`.
+void ExpectJacobiansMatchFiniteDifferences(const Model& model, bool check_stiffness = true,
+                                           double step = 0.0,
+                                           const Vector3d& bristle = Vector3d::Zero()) {
+  TargetContact contact(model);
+  contact.SetStepSize(step);
   VectorXd q = model.initial_positions();
   VectorXd v = VectorXd::Zero(model.num_dofs());
   for (Index i = 0; i < v.size(); ++i) v[i] = 0.01 * std::sin(1.7 * i + 0.3);
-  std::vector<double> history(static_cast<std::size_t>(CountContactPairs(model)), 0.0);
-  for (std::size_t i = 0; i < history.size(); ++i) history[i] = i % 2 ? 0.5 : -0.3;
+  std::vector<ContactPairHistory> history(static_cast<std::size_t>(CountContactPairs(model)));
+  for (std::size_t i = 0; i < history.size(); ++i) {
+    history[i].speed = i % 2 ? 0.5 : -0.3;
+    history[i].bristle = (i % 3 ? 1.0 : -0.5) * bristle;
+  }
   const auto forces = [&](const VectorXd& x, const VectorXd& x_dot) {
     Workspace ws(model);
     ws.internal_force.setZero();
@@ -72,17 +82,22 @@ TEST(TargetContact, JacobiansMatchFiniteDifferencesOnASphere) {
   ContactTarget sphere;
   sphere.kind = ContactTarget::Kind::kSphere;
   sphere.radius = 0.3;
-  ExpectJacobiansMatchFiniteDifferences(MakePressedCable(sphere, false));
+  ExpectJacobiansMatchFiniteDifferences(MakePressedCable(sphere, std::nullopt));
   // With friction only the velocity Jacobian is exact on a curved target (the turning of the
   // tangent plane with the position is left out of the stiffness).
-  ExpectJacobiansMatchFiniteDifferences(MakePressedCable(sphere, true), false);
+  ExpectJacobiansMatchFiniteDifferences(MakePressedCable(sphere, kTanh), false);
 }
 
 TEST(TargetContact, JacobiansMatchFiniteDifferencesOnAPlane) {
   ContactTarget plane;
   plane.point = Vector3d(0, 0, 0.3);
   plane.normal = Vector3d(0.1, 0.0, 1.0).normalized();
-  ExpectJacobiansMatchFiniteDifferences(MakePressedCable(plane, true));
+  ExpectJacobiansMatchFiniteDifferences(MakePressedCable(plane, kTanh));
+  // The LuGre law stepped over 1 ms from bristles deflected by up to 30 µm (off the tangent
+  // plane too: they are re-projected), with bristle damping and viscous friction.
+  ExpectJacobiansMatchFiniteDifferences(
+      MakePressedCable(plane, MakeLuGreFriction(0.4, 0.3, 1e-2, 1e4, 50.0, 0.1)), true, 1e-3,
+      Vector3d(3e-5, -1e-5, 5e-6));
 }
 
 TEST(TargetContact, JacobiansMatchFiniteDifferencesOnACapsuleAndAMesh) {
@@ -91,11 +106,11 @@ TEST(TargetContact, JacobiansMatchFiniteDifferencesOnACapsuleAndAMesh) {
   capsule.normal = Vector3d::UnitY();
   capsule.half_length = 0.1;
   capsule.radius = 0.3;
-  ExpectJacobiansMatchFiniteDifferences(MakePressedCable(capsule, false));
+  ExpectJacobiansMatchFiniteDifferences(MakePressedCable(capsule, std::nullopt));
   ContactTarget mesh;
   mesh.kind = ContactTarget::Kind::kMesh;
   mesh.mesh = std::make_shared<const MeshBvh>(MakeIcosphere(0.3, 4));
-  ExpectJacobiansMatchFiniteDifferences(MakePressedCable(mesh, false));
+  ExpectJacobiansMatchFiniteDifferences(MakePressedCable(mesh, std::nullopt));
 }
 
 }  // namespace
