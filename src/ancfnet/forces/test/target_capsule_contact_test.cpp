@@ -146,8 +146,12 @@ TEST(TargetCapsuleContact, ForceIsMinusTheEnergyGradientAcrossAMesh) {
   ContactTarget mesh;
   mesh.kind = ContactTarget::Kind::kMesh;
   mesh.mesh = std::make_shared<const MeshBvh>(MakeIcosphere(0.3, 4));
-  const Model model = MakeCrossingCable(mesh, kStart, kEnd);
-  ExpectForceIsMinusTheEnergyGradient(model, 2);
+  // The axis outside the faceted surface (δ < r), where its signed distance is C¹; inside, it is
+  // the maximum of the faces' planes, and a minimum along the axis on a kink between two faces
+  // has no gradient (theory.md, "Capsule chains against rigid targets").
+  const Vector3d up(0.0, 0.0, 0.0015);
+  const Model model = MakeCrossingCable(mesh, kStart + up, kEnd + up);
+  ExpectForceIsMinusTheEnergyGradient(model, 1);
   ExpectVelocityJacobianMatches(model);
 }
 
