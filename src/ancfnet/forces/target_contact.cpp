@@ -114,6 +114,8 @@ TargetContact::ProbePoint TargetContact::FindProbePoint(const ContactTarget& tar
   point.t = d.t;
   point.x = (1.0 - d.t) * axis.x0 + d.t * axis.x1;
   point.x_dot = (1.0 - d.t) * axis.v0 + d.t * axis.v1;
+  point.axis = axis.x1 - axis.x0;
+  point.axis_rate = axis.v1 - axis.v0;
   point.distance = d;
   return point;
 }
@@ -148,6 +150,16 @@ TargetContact::PairForce TargetContact::CalcPairForce(const Frame& frame, const 
   static_cast<ContactPairForce&>(r) =
       CalcContactPairForce(spec.normal, spec.friction, kinematics, approach_speed, with_jacobian);
   r.t = point.t;
+  // An interior minimum where φ is smooth (φ' = n·Δ ≈ 0, φ'' > 0): t* moves with the positions.
+  const double slope = point.distance.normal.dot(point.axis);
+  const double curvature = point.axis.dot(point.distance.hessian * point.axis);
+  if (with_jacobian && point.t > 0.0 && point.t < 1.0 && curvature > 0.0 &&
+      std::abs(slope) <= 1e-9 * point.axis.norm()) {
+    r.axis = point.axis;
+    r.axis_rate = point.axis_rate;
+    r.hessian = point.distance.hessian;
+    r.curvature = curvature;
+  }
   r.surface_point = point.x - (probe.radius - kinematics.penetration) * kinematics.normal;
   r.normal = kinematics.normal;
   return r;
@@ -242,6 +254,19 @@ void TargetContact::AddJacobian(const VectorXd& q, const VectorXd& v,
       Matrix12d element_block;
       for (int i = 0; i < 4; ++i)
         for (int j = 0; j < 4; ++j) element_block.block<3, 3>(3 * i, 3 * j) = w[i] * w[j] * block;
+      if (f.curvature > 0.0) {
+        // The motion of t*, ∂t*/∂e_k = −(w_k Δᵀ H + d_k nᵀ)/φ'' with d = S(ξ₁) − S(ξ₀), moves
+        // the point, its velocity (b = ∂f/∂x Δ + ∂f/∂ẋ Δ̇) and the weights of −w_i f:
+        // += c_K (w_i b + d_i f)(w_k Δᵀ H + d_k nᵀ)/φ''.
+        const Vector4d d = probe.shape1 - probe.shape0;
+        const Vector3d b = f.dforce_dx * f.axis + f.dforce_dv * f.axis_rate;
+        const Eigen::RowVector3d h = f.axis.transpose() * f.hessian;
+        for (int i = 0; i < 4; ++i)
+          for (int j = 0; j < 4; ++j)
+            element_block.block<3, 3>(3 * i, 3 * j) += (weights.stiffness / f.curvature) *
+                                                       (w[i] * b + d[i] * f.force) *
+                                                       (w[j] * h + d[j] * f.normal.transpose());
+      }
       matrix->AddElementBlock(probe.element, element_block);
     }
     const Frame& frame = frames_[f.target];

@@ -61,9 +61,11 @@ class TargetContact {
   /// a pair that touches during the step.
   void AddForces(const VectorXd& q, const VectorXd& v, const std::vector<double>& history,
                  Workspace& ws) const;
-  /// matrix += c_K ∂Q/∂q + c_C ∂Q/∂q̇ of the contact forces. Left out: the friction force's
-  /// dependence on the positions through the tangent plane, and for a capsule the motion of t*
-  /// with q (the blocks are those of a material point fixed at t*).
+  /// matrix += c_K ∂Q/∂q + c_C ∂Q/∂q̇ of the contact forces; for a capsule whose t* lies inside
+  /// its axis at a smooth minimum, with the motion of t* with the element's coordinates
+  /// (docs/theory.md, "Capsule chains against rigid targets"). Left out: the friction force's
+  /// dependence on the positions through the tangent plane, and the motion of t* with the pose
+  /// of a body carrying the target.
   void AddJacobian(const VectorXd& q, const VectorXd& v, const std::vector<double>& history,
                    const IterationWeights& weights, SystemMatrix* matrix) const;
   /// After an accepted step: a pair apart stores minus its closing speed; a pair that has just
@@ -93,6 +95,12 @@ class TargetContact {
     double t = 0.0;                             // t* of the probe's point on its axis
     Vector3d surface_point = Vector3d::Zero();  // closest point of the target's surface (m)
     Vector3d normal = Vector3d::UnitZ();        // outward normal of the target
+    // A capsule at an interior, smooth t*: Δ = x₁ − x₀, Δ̇, H = ∂n/∂x and φ'' = Δᵀ H Δ > 0 for
+    // the motion of t* in the Jacobian (φ'' = 0: t* held fixed).
+    Vector3d axis = Vector3d::Zero();
+    Vector3d axis_rate = Vector3d::Zero();
+    Matrix3d hessian = Matrix3d::Zero();
+    double curvature = 0.0;
   };
   // Where a target is: fixed, or moving with its body.
   struct Frame {
@@ -110,6 +118,7 @@ class TargetContact {
   struct ProbePoint {
     double t = 0.0;
     Vector3d x, x_dot;
+    Vector3d axis, axis_rate;  // x₁ − x₀ and its rate
     TargetDistance distance;
   };
   ProbePoint FindProbePoint(const ContactTarget& target, const Frame& frame,

@@ -30,9 +30,11 @@ struct SegmentMinimum {
 ///  3. In the bracket [lo, hi], φ'(lo) < 0 < φ'(hi): a Newton step t ← t − φ'/φ'' where φ'' > 0
 ///     and it lands inside (lo, hi), else bisection; lo or hi moves to t by the sign of φ'(t).
 ///     Stops when |φ'| ≤ `slope_tolerance`, the bracket is narrower than 10⁻¹⁴ or after 64 steps.
-/// Returns the lowest point evaluated (the later on ties). For a convex φ (a convex target) φ'
-/// increases along t, so m = 1 finds the global minimum; for a non-convex φ (a mesh) it finds a
-/// local minimum no higher than the lowest sample, and misses minima that are not next to it.
+/// Returns the last point of step 3, or t_i where that is higher (near the minimum φ is flat to
+/// rounding, so the iterate, not the lowest value, is the accurate t*). For a convex φ (a convex
+/// target) φ' increases along t, so m = 1 finds the global minimum; for a non-convex φ (a mesh)
+/// it finds a local minimum no higher than the lowest sample, and misses minima that are not
+/// next to it.
 template <class Evaluate>
 SegmentMinimum FindSegmentMinimum(const Evaluate& evaluate, int intervals, double slope_tolerance) {
   SegmentMinimum best;
@@ -68,10 +70,10 @@ SegmentMinimum FindSegmentMinimum(const Evaluate& evaluate, int intervals, doubl
     s = evaluate(t);
     ++best.evaluations;
     (s.slope < 0.0 ? lo : hi) = t;
-    if (s.value <= best.sample.value) {
-      best.t = t;
-      best.sample = s;
-    }
+  }
+  if (s.value <= at_lowest.value) {
+    best.t = t;
+    best.sample = s;
   }
   return best;
 }
