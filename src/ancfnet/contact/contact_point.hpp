@@ -19,7 +19,7 @@ struct ContactPoint {
   Index target = -1;      ///< index into ContactSpec::targets, or −1 for self-contact
   Index element = -1;     ///< cable element of the probe, or −1 for a point mass
   Index point_mass = -1;  ///< point mass of the probe, or −1
-  double xi = 0.0;        ///< ξ ∈ (0, 1) of the probe on its element
+  double xi = 0.0;  ///< ξ ∈ [0, 1] of the probe (a capsule: its deepest point) on its element
 };
 
 }  // namespace ancfnet

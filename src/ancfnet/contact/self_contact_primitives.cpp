@@ -17,14 +17,10 @@ double CableRadius(const Model& model, const CableElement& element) {
                                  : model.cables()[element.cable].properties.radius;
 }
 
-// Primitives per element and whether they are spheres.
 int PrimitivesPerElement(const ContactSpec& spec, double length, double radius) {
-  const bool spheres = spec.self_geometry == ContactSpec::SelfGeometry::kSpheres;
-  const int given = spheres ? spec.points_per_element : spec.capsules_per_element;
-  if (given > 0) return given;
-  if (radius <= 0.0) return spheres ? 2 : 1;
-  if (spheres) return static_cast<int>(std::clamp(std::ceil(length / (2.0 * radius)), 2.0, 32.0));
-  return static_cast<int>(std::clamp(std::ceil(length / (8.0 * radius)), 1.0, 8.0));
+  return spec.self_geometry == ContactSpec::SelfGeometry::kSpheres
+             ? CalcSpheresPerElement(spec, length, radius)
+             : CalcCapsulesPerElement(spec, length, radius);
 }
 
 // Union–find over junction nodes.

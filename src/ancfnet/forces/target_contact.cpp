@@ -5,60 +5,14 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ancfnet/contact/distance/point_box.hpp"
-#include "ancfnet/contact/distance/point_capsule.hpp"
-#include "ancfnet/contact/distance/point_cylinder.hpp"
-#include "ancfnet/contact/distance/point_plane.hpp"
-#include "ancfnet/contact/distance/point_sphere.hpp"
 #include "ancfnet/elements/hermite_shape.hpp"
 
 namespace ancfnet {
 namespace {
 
-// Signed distance of a point to a target's surface, its outward normal and ∂n/∂x.
-struct Gap {
-  double distance = 0.0;
-  Vector3d normal = Vector3d::UnitZ();
-  Matrix3d hessian = Matrix3d::Zero();
-};
-
-Gap CalcGap(const ContactTarget& t, const Vector3d& x) {
-  switch (t.kind) {
-    case ContactTarget::Kind::kPlane: {
-      const PointPlaneDistance d = CalcPointPlaneDistance(x, t.point, t.normal);
-      return {d.distance, d.gradient_p, Matrix3d::Zero()};
-    }
-    case ContactTarget::Kind::kSphere: {
-      const PointSphereDistance d = CalcPointSphereDistance(x, t.point, t.radius);
-      return {d.distance, d.normal, d.hessian};
-    }
-    case ContactTarget::Kind::kBox: {
-      const PointBoxDistance d = CalcPointBoxDistance(x, t.point, t.half_extents, t.rotation);
-      return {d.distance, d.normal, d.hessian};
-    }
-    case ContactTarget::Kind::kCylinder: {
-      const PointCylinderDistance d =
-          CalcPointCylinderDistance(x, t.point, t.normal, t.radius, t.half_length);
-      return {d.distance, d.normal, d.hessian};
-    }
-    case ContactTarget::Kind::kCapsule: {
-      const PointCapsuleDistance d =
-          CalcPointCapsuleDistance(x, t.point, t.normal, t.half_length, t.radius);
-      return {d.distance, d.normal, d.hessian};
-    }
-    case ContactTarget::Kind::kMesh: {
-      const MeshDistance d = t.mesh->CalcDistance(x);
-      return {d.distance, d.normal, d.hessian};
-    }
-  }
-  return {};
-}
-
-// Automatic inspection spheres per element: one per diameter of length, 2 … 32.
-int PointsPerElement(const ContactSpec& spec, double length, double radius) {
-  if (spec.points_per_element > 0) return spec.points_per_element;
-  const double per_diameter = radius > 0.0 ? length / (2.0 * radius) : 2.0;
-  return static_cast<int>(std::clamp(std::ceil(per_diameter), 2.0, 32.0));
+// The generalised weights of the point c(t) = (1 − t) r(ξ₀) + t r(ξ₁) of a probe's axis.
+Vector4d CalcWeights(const ContactProbe& probe, double t) {
+  return (1.0 - t) * probe.shape0 + t * probe.shape1;
 }
 
 }  // namespace
@@ -73,12 +27,16 @@ std::vector<ContactProbe> MakeContactProbes(const Model& model) {
     const double radius = spec.cable_radius > 0.0
                               ? spec.cable_radius
                               : model.cables()[elements[e].cable].properties.radius;
-    const int n = PointsPerElement(spec, p.length, radius);
+    const bool capsules = spec.target_geometry == ContactSpec::TargetGeometry::kCapsules;
+    const int n = capsules ? CalcCapsulesPerElement(spec, p.length, radius)
+                           : CalcSpheresPerElement(spec, p.length, radius);
     for (int j = 0; j < n; ++j) {
       ContactProbe probe;
       probe.element = static_cast<Index>(e);
-      probe.xi = (j + 0.5) / n;
-      probe.shape = CalcHermiteShape(probe.xi, p.length).s;
+      probe.xi0 = capsules ? static_cast<double>(j) / n : (j + 0.5) / n;
+      probe.xi1 = capsules ? static_cast<double>(j + 1) / n : probe.xi0;
+      probe.shape0 = CalcHermiteShape(probe.xi0, p.length).s;
+      probe.shape1 = CalcHermiteShape(probe.xi1, p.length).s;
       probe.radius = radius;
       probes.push_back(probe);
     }
@@ -116,41 +74,63 @@ Index TargetContact::ProbeOwner(const ContactProbe& probe) const {
                             : static_cast<Index>(model_.elements().size()) + probe.point_mass;
 }
 
-void TargetContact::Locate(const ContactProbe& probe, const VectorXd& q, const VectorXd& v,
-                           Vector3d* x, Vector3d* x_dot) const {
+TargetContact::Axis TargetContact::Locate(const ContactProbe& probe, const VectorXd& q,
+                                          const VectorXd& v) const {
+  Axis axis;
   if (probe.element < 0) {
     const Index dof = model_.point_masses()[probe.point_mass].dof;
-    *x = q.segment<3>(dof);
-    *x_dot = v.segment<3>(dof);
-    return;
+    axis.x0 = axis.x1 = q.segment<3>(dof);
+    axis.v0 = axis.v1 = v.segment<3>(dof);
+    return axis;
   }
   const CableElement& element = model_.elements()[probe.element];
-  x->setZero();
-  x_dot->setZero();
+  axis.x0.setZero();
+  axis.x1.setZero();
+  axis.v0.setZero();
+  axis.v1.setZero();
   for (int k = 0; k < 4; ++k) {
     const Index dof = element.dofs[3 * k];
-    *x += probe.shape[k] * q.segment<3>(dof);
-    *x_dot += probe.shape[k] * v.segment<3>(dof);
+    axis.x0 += probe.shape0[k] * q.segment<3>(dof);
+    axis.x1 += probe.shape1[k] * q.segment<3>(dof);
+    axis.v0 += probe.shape0[k] * v.segment<3>(dof);
+    axis.v1 += probe.shape1[k] * v.segment<3>(dof);
   }
+  return axis;
 }
 
-ContactKinematics TargetContact::CalcKinematics(const ContactTarget& target, const Frame& frame,
-                                                const ContactProbe& probe, const Vector3d& x,
-                                                const Vector3d& x_dot) const {
-  ContactKinematics k;
-  k.velocity = x_dot;
-  Gap gap;
+TargetContact::ProbePoint TargetContact::FindProbePoint(const ContactTarget& target,
+                                                        const Frame& frame,
+                                                        const Axis& axis) const {
+  ProbePoint point;
+  SegmentTargetDistance d;
   if (frame.body < 0) {
-    gap = CalcGap(target, x);
+    d = CalcSegmentTargetDistance(target, axis.x0, axis.x1);
   } else {
-    // In the body's frame: x_B = R_WBᵀ (x − x_WB); n = R_WB n_B, ∂n/∂x = R_WB H_B R_WBᵀ; the
-    // surface point s moves with the body at ẋ_WB + R_WB (ω_B × R_WBᵀ (s − x_WB)).
+    // In the body's frame: x_B = R_WBᵀ (x − x_WB); n = R_WB n_B, ∂n/∂x = R_WB H_B R_WBᵀ.
     const Matrix3d& R = frame.pose.R_WB;
-    const Gap local = CalcGap(target, R.transpose() * (x - frame.pose.p_WB));
-    gap.distance = local.distance;
-    gap.normal = R * local.normal;
-    gap.hessian = R * local.hessian * R.transpose();
-    const Vector3d s = x - gap.distance * gap.normal;
+    d = CalcSegmentTargetDistance(target, R.transpose() * (axis.x0 - frame.pose.p_WB),
+                                  R.transpose() * (axis.x1 - frame.pose.p_WB));
+    d.normal = R * d.normal;
+    d.hessian = R * d.hessian * R.transpose();
+  }
+  point.t = d.t;
+  point.x = (1.0 - d.t) * axis.x0 + d.t * axis.x1;
+  point.x_dot = (1.0 - d.t) * axis.v0 + d.t * axis.v1;
+  point.axis = axis.x1 - axis.x0;
+  point.axis_rate = axis.v1 - axis.v0;
+  point.distance = d;
+  return point;
+}
+
+ContactKinematics TargetContact::CalcKinematics(const Frame& frame, const ContactProbe& probe,
+                                                const ProbePoint& point) const {
+  ContactKinematics k;
+  k.velocity = point.x_dot;
+  const TargetDistance& gap = point.distance;
+  if (frame.body >= 0) {
+    // The surface point s moves with the body at ẋ_WB + R_WB (ω_B × R_WBᵀ (s − x_WB)).
+    const Matrix3d& R = frame.pose.R_WB;
+    const Vector3d s = point.x - gap.distance * gap.normal;
     k.velocity -=
         frame.velocity.v_WB + R * frame.velocity.w_B.cross(R.transpose() * (s - frame.pose.p_WB));
   }
@@ -160,12 +140,11 @@ ContactKinematics TargetContact::CalcKinematics(const ContactTarget& target, con
   return k;
 }
 
-TargetContact::PairForce TargetContact::CalcPairForce(const ContactTarget& target,
-                                                      const Frame& frame, const ContactProbe& probe,
-                                                      const Vector3d& x, const Vector3d& x_dot,
+TargetContact::PairForce TargetContact::CalcPairForce(const Frame& frame, const ContactProbe& probe,
+                                                      const ProbePoint& point,
                                                       const ContactPairHistory& history,
                                                       bool with_jacobian) const {
-  const ContactKinematics kinematics = CalcKinematics(target, frame, probe, x, x_dot);
+  const ContactKinematics kinematics = CalcKinematics(frame, probe, point);
   // history.speed > 0: the impact speed frozen at first touch; ≤ 0: apart at the last accepted
   // state, closing at −history.speed (a constant through this step's Newton iterations). The
   // bristle of a target on a body turns with it: z_W = R_WB z_B, R_WB at (q, v).
@@ -176,7 +155,18 @@ TargetContact::PairForce TargetContact::CalcPairForce(const ContactTarget& targe
   static_cast<ContactPairForce&>(r) = CalcContactPairForce(
       spec.normal, spec.friction, kinematics, history.speed, bristle, step_, with_jacobian);
   if (frame.body >= 0) r.bristle = frame.pose.R_WB.transpose() * r.bristle;
-  r.surface_point = x - (probe.radius - kinematics.penetration) * kinematics.normal;
+  r.t = point.t;
+  // An interior minimum where φ is smooth (φ' = n·Δ ≈ 0, φ'' > 0): t* moves with the positions.
+  const double slope = point.distance.normal.dot(point.axis);
+  const double curvature = point.axis.dot(point.distance.hessian * point.axis);
+  if (with_jacobian && point.t > 0.0 && point.t < 1.0 && curvature > 0.0 &&
+      std::abs(slope) <= 1e-9 * point.axis.norm()) {
+    r.axis = point.axis;
+    r.axis_rate = point.axis_rate;
+    r.hessian = point.distance.hessian;
+    r.curvature = curvature;
+  }
+  r.surface_point = point.x - (probe.radius - kinematics.penetration) * kinematics.normal;
   r.normal = kinematics.normal;
   return r;
 }
@@ -191,13 +181,13 @@ void TargetContact::FindBodyCouplings(const VectorXd& q, const VectorXd& v, doub
     const Frame frame = CalcFrame(targets[t], q, v);
     const Index body_owner = matrix.BodyOwner(frame.body);
     for (const ContactProbe& probe : probes_) {
-      Vector3d x, x_dot;
-      Locate(probe, q, v, &x, &x_dot);
+      const ProbePoint point = FindProbePoint(targets[t], frame, Locate(probe, q, v));
       const Matrix3d& R = frame.pose.R_WB;
-      const Gap gap = CalcGap(targets[t], R.transpose() * (x - frame.pose.p_WB));
       const Vector3d body_velocity =
-          frame.velocity.v_WB + R * frame.velocity.w_B.cross(R.transpose() * (x - frame.pose.p_WB));
-      if (gap.distance < 1.5 * probe.radius + 2.0 * h * (x_dot - body_velocity).norm())
+          frame.velocity.v_WB +
+          R * frame.velocity.w_B.cross(R.transpose() * (point.x - frame.pose.p_WB));
+      if (point.distance.distance <
+          1.5 * probe.radius + 2.0 * h * (point.x_dot - body_velocity).norm())
         owners->emplace_back(ProbeOwner(probe), body_owner);
     }
   }
@@ -210,11 +200,11 @@ void TargetContact::ForEachTouchingPair(const VectorXd& q, const VectorXd& v,
   const auto& targets = model_.contact().targets;
   for (std::size_t t = 0; t < targets.size(); ++t) frames_[t] = CalcFrame(targets[t], q, v);
   for (std::size_t p = 0; p < probes_.size(); ++p) {
-    Vector3d x, x_dot;
-    Locate(probes_[p], q, v, &x, &x_dot);
+    const Axis axis = Locate(probes_[p], q, v);
     for (std::size_t t = 0; t < targets.size(); ++t) {
-      PairForce f = CalcPairForce(targets[t], frames_[t], probes_[p], x, x_dot,
-                                  history[p * targets.size() + t], with_jacobian);
+      const ProbePoint point = FindProbePoint(targets[t], frames_[t], axis);
+      PairForce f = CalcPairForce(frames_[t], probes_[p], point, history[p * targets.size() + t],
+                                  with_jacobian);
       if (!f.touching) continue;
       f.target = static_cast<Index>(t);
       visit(probes_[p], f);
@@ -233,10 +223,11 @@ void TargetContact::AddForces(const VectorXd& q, const VectorXd& v,
       ws.viscous_force.segment<3>(dof) -= f.dissipative;
     } else {
       const CableElement& element = model_.elements()[probe.element];
+      const Vector4d w = CalcWeights(probe, f.t);
       for (int k = 0; k < 4; ++k) {
         const Index dof = element.dofs[3 * k];
-        ws.internal_force.segment<3>(dof) -= probe.shape[k] * f.force;
-        ws.viscous_force.segment<3>(dof) -= probe.shape[k] * f.dissipative;
+        ws.internal_force.segment<3>(dof) -= w[k] * f.force;
+        ws.viscous_force.segment<3>(dof) -= w[k] * f.dissipative;
       }
     }
     const Frame& frame = frames_[f.target];
@@ -257,17 +248,31 @@ void TargetContact::AddJacobian(const VectorXd& q, const VectorXd& v,
                                 const std::vector<ContactPairHistory>& history,
                                 const IterationWeights& weights, SystemMatrix* matrix) const {
   ForEachTouchingPair(q, v, history, true, [&](const ContactProbe& probe, const PairForce& f) {
-    // Q = −Sᵀ f(x − x_s): ∂Q/∂e = −Sᵀ (∂f/∂x) S, with B = −(c_K ∂f/∂x + c_C ∂f/∂ẋ).
+    // Q = −Sᵀ f(x − x_s): ∂Q/∂e = −Sᵀ (∂f/∂x) S, with B = −(c_K ∂f/∂x + c_C ∂f/∂ẋ) and
+    // S = S(t*) held fixed.
     const Matrix3d block = -(weights.stiffness * f.dforce_dx + weights.damping * f.dforce_dv);
     const int num_blocks = probe.element < 0 ? 1 : 4;
-    auto weight = [&](int i) { return probe.element < 0 ? 1.0 : probe.shape[i]; };
+    const Vector4d w = CalcWeights(probe, f.t);
+    auto weight = [&](int i) { return probe.element < 0 ? 1.0 : w[i]; };
     if (probe.element < 0) {
       matrix->AddPointMassBlock(probe.point_mass, block);
     } else {
       Matrix12d element_block;
       for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 4; ++j)
-          element_block.block<3, 3>(3 * i, 3 * j) = probe.shape[i] * probe.shape[j] * block;
+        for (int j = 0; j < 4; ++j) element_block.block<3, 3>(3 * i, 3 * j) = w[i] * w[j] * block;
+      if (f.curvature > 0.0) {
+        // The motion of t*, ∂t*/∂e_k = −(w_k Δᵀ H + d_k nᵀ)/φ'' with d = S(ξ₁) − S(ξ₀), moves
+        // the point, its velocity (b = ∂f/∂x Δ + ∂f/∂ẋ Δ̇) and the weights of −w_i f:
+        // += c_K (w_i b + d_i f)(w_k Δᵀ H + d_k nᵀ)/φ''.
+        const Vector4d d = probe.shape1 - probe.shape0;
+        const Vector3d b = f.dforce_dx * f.axis + f.dforce_dv * f.axis_rate;
+        const Eigen::RowVector3d h = f.axis.transpose() * f.hessian;
+        for (int i = 0; i < 4; ++i)
+          for (int j = 0; j < 4; ++j)
+            element_block.block<3, 3>(3 * i, 3 * j) += (weights.stiffness / f.curvature) *
+                                                       (w[i] * b + d[i] * f.force) *
+                                                       (w[j] * h + d[j] * f.normal.transpose());
+      }
       matrix->AddElementBlock(probe.element, element_block);
     }
     const Frame& frame = frames_[f.target];
@@ -297,17 +302,16 @@ void TargetContact::UpdateHistory(const VectorXd& q, const VectorXd& v,
       model_.contact().friction && model_.contact().friction->kind == FrictionLawKind::kLuGre;
   for (std::size_t t = 0; t < targets.size(); ++t) frames_[t] = CalcFrame(targets[t], q, v);
   for (std::size_t p = 0; p < probes_.size(); ++p) {
-    Vector3d x, x_dot;
-    Locate(probes_[p], q, v, &x, &x_dot);
+    const Axis axis = Locate(probes_[p], q, v);
     for (std::size_t t = 0; t < targets.size(); ++t) {
       ContactPairHistory& stored = (*history)[p * targets.size() + t];
-      const ContactKinematics k = CalcKinematics(targets[t], frames_[t], probes_[p], x, x_dot);
+      const ProbePoint point = FindProbePoint(targets[t], frames_[t], axis);
+      const ContactKinematics k = CalcKinematics(frames_[t], probes_[p], point);
       const double closing = std::max(-k.normal.dot(k.velocity), 0.0);
       // The bristle at the end of the step, from the history at its start.
-      stored.bristle =
-          bristles
-              ? CalcPairForce(targets[t], frames_[t], probes_[p], x, x_dot, stored, false).bristle
-              : Vector3d::Zero();
+      stored.bristle = bristles
+                           ? CalcPairForce(frames_[t], probes_[p], point, stored, false).bristle
+                           : Vector3d::Zero();
       if (!(k.penetration > 0.0)) {
         stored.speed = -closing;  // apart: remember how fast it closes in
       } else if (stored.speed <= 0.0) {
@@ -328,19 +332,20 @@ std::string TargetContact::CheckStep(const VectorXd& q_start, const VectorXd& v_
     const Frame start = CalcFrame(targets[t], q_start, v_start);
     const Frame end = CalcFrame(targets[t], q, v);
     for (const ContactProbe& probe : probes_) {
-      Vector3d x, x_dot;
-      Locate(probe, q, v, &x, &x_dot);
-      const double depth = CalcKinematics(targets[t], end, probe, x, x_dot).penetration;
+      const ProbePoint point = FindProbePoint(targets[t], end, Locate(probe, q, v));
+      const double depth = probe.radius - point.distance.distance;
       const double limit = fraction * probe.radius;
       if (!(depth > limit)) continue;
-      Locate(probe, q_start, v_start, &x, &x_dot);
-      const double depth_start = CalcKinematics(targets[t], start, probe, x, x_dot).penetration;
+      const double depth_start =
+          probe.radius -
+          FindProbePoint(targets[t], start, Locate(probe, q_start, v_start)).distance.distance;
       if (depth - std::max(depth_start, 0.0) <= limit) continue;
-      const std::string where =
-          probe.element >= 0 ? fmt::format("element {} at ξ = {:.3f}", probe.element, probe.xi)
-                             : fmt::format("point mass {}", probe.point_mass);
+      const std::string where = probe.element >= 0
+                                    ? fmt::format("element {} at ξ = {:.3f}", probe.element,
+                                                  (1.0 - point.t) * probe.xi0 + point.t * probe.xi1)
+                                    : fmt::format("point mass {}", probe.point_mass);
       return fmt::format(
-          "the inspection sphere of {} sank {:.3g} m into target '{}' in one step (more than {} "
+          "the contact probe of {} sank {:.3g} m into target '{}' in one step (more than {} "
           "of its radius)",
           where, depth - std::max(depth_start, 0.0), targets[t].name, fraction);
     }
@@ -372,7 +377,7 @@ void TargetContact::CollectContacts(const VectorXd& q, const VectorXd& v,
                     .target = f.target,
                     .element = probe.element,
                     .point_mass = probe.point_mass,
-                    .xi = probe.xi});
+                    .xi = (1.0 - f.t) * probe.xi0 + f.t * probe.xi1});
   });
 }
 

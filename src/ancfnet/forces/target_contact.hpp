@@ -1,9 +1,10 @@
 #pragma once
-/// @file Contact forces between the model (cable inspection spheres, point-mass spheres) and its
-/// rigid targets (model/contact_spec.hpp): a normal law on the penetration δ and its rate,
-/// regularised friction on the tangential slip, applied at the inspection point's material
-/// coordinate and mapped to positions and slopes by Q = Sᵀ(ξ) f, with the Jacobians an implicit
-/// integrator needs (docs/theory.md, "Contact with rigid targets").
+/// @file Contact forces between the model (cable inspection spheres or capsule chains,
+/// point-mass spheres) and its rigid targets (model/contact_spec.hpp): a normal law on the
+/// penetration δ and its rate, regularised friction on the tangential slip, applied at the
+/// probe's point nearest the target and mapped to positions and slopes by Q = Sᵀ f, with the
+/// Jacobians an implicit integrator needs (docs/theory.md, "Contact with rigid targets" and
+/// "Capsule chains against rigid targets").
 
 #include <string>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "ancfnet/assembly/forces.hpp"
 #include "ancfnet/contact/contact_pair_force.hpp"
 #include "ancfnet/contact/contact_point.hpp"
+#include "ancfnet/contact/target_distance.hpp"
 #include "ancfnet/model/model.hpp"
 #include "ancfnet/model/rigid_body_kinematics.hpp"
 #include "ancfnet/state/state.hpp"
@@ -18,17 +20,21 @@
 
 namespace ancfnet {
 
-/// An inspection sphere: a material point of a cable element, or a point mass.
+/// A probe of a cable element: a capsule whose axis is the chord between the material points
+/// ξ₀ < ξ₁ of the deformed centre line, c(t) = (1 − t) r(ξ₀) + t r(ξ₁), or an inspection sphere
+/// (ξ₀ = ξ₁); or a point mass's sphere.
 struct ContactProbe {
-  Index element = -1;                 ///< cable element, or −1 for a point mass
-  Index point_mass = -1;              ///< point mass, or −1
-  double xi = 0.0;                    ///< ξ ∈ (0, 1) on the element
-  Vector4d shape = Vector4d::Zero();  ///< S₁ … S₄ at ξ (r = Σ S_k e_k)
-  double radius = 0.0;                ///< m
+  Index element = -1;                  ///< cable element, or −1 for a point mass
+  Index point_mass = -1;               ///< point mass, or −1
+  double xi0 = 0.0, xi1 = 0.0;         ///< ξ ∈ [0, 1] of the axis' ends on the element
+  Vector4d shape0 = Vector4d::Zero();  ///< S₁ … S₄ at ξ₀ (r = Σ S_k e_k)
+  Vector4d shape1 = Vector4d::Zero();  ///< at ξ₁
+  double radius = 0.0;                 ///< m
 };
 
-/// The inspection spheres of the model in order: for each cable element its points at
-/// ξ = (j + ½)/n, then one per point mass. Empty without contact targets.
+/// The probes of the model in order: for each cable element its inspection spheres at
+/// ξ = (j + ½)/n (ContactSpec::TargetGeometry::kSpheres) or its capsules from ξ = j/n to
+/// (j + 1)/n (kCapsules), then one sphere per point mass. Empty without contact targets.
 std::vector<ContactProbe> MakeContactProbes(const Model& model);
 
 /// Number of (probe, target) pairs: the size of State::contact_history.
@@ -55,12 +61,16 @@ class TargetContact {
                          std::vector<std::pair<Index, Index>>* owners) const;
 
   /// ws.internal_force −= Sᵀ f and ws.viscous_force −= Sᵀ f_dissipative for every touching pair
-  /// (and += Gᵀ f on the body carrying the target, G its point-velocity map at the contact point);
+  /// (and += Gᵀ f on the body carrying the target, G its point-velocity map at the contact point),
+  /// S = (1 − t*) S(ξ₀) + t* S(ξ₁) at the probe's point c(t*) deepest in the target;
   /// ws.contact_energy = Σ ∫ F_elastic dδ. `history` is each pair's at the start of the step.
   void AddForces(const VectorXd& q, const VectorXd& v,
                  const std::vector<ContactPairHistory>& history, Workspace& ws) const;
-  /// matrix += c_K ∂Q/∂q + c_C ∂Q/∂q̇ of the contact forces. Left out: the friction force's
-  /// dependence on the positions through the tangent plane.
+  /// matrix += c_K ∂Q/∂q + c_C ∂Q/∂q̇ of the contact forces; for a capsule whose t* lies inside
+  /// its axis at a smooth minimum, with the motion of t* with the element's coordinates
+  /// (docs/theory.md, "Capsule chains against rigid targets"). Left out: the friction force's
+  /// dependence on the positions through the tangent plane, and the motion of t* with the pose
+  /// of a body carrying the target.
   void AddJacobian(const VectorXd& q, const VectorXd& v,
                    const std::vector<ContactPairHistory>& history, const IterationWeights& weights,
                    SystemMatrix* matrix) const;
@@ -87,8 +97,8 @@ class TargetContact {
 
   /// Appends a record of every touching (probe, target) pair at (q, v) to `out`, probes in the
   /// order of MakeContactProbes and, for each, targets in the order of ContactSpec::targets. The
-  /// forces are those AddForces applies (force_W = F n + f_t on the probe). For outputs: it
-  /// allocates as `out` grows.
+  /// forces are those AddForces applies (force_W = F n + f_t on the probe); ξ is that of c(t*),
+  /// (1 − t*) ξ₀ + t* ξ₁. For outputs: it allocates as `out` grows.
   void CollectContacts(const VectorXd& q, const VectorXd& v,
                        const std::vector<ContactPairHistory>& history,
                        std::vector<ContactPoint>* out) const;
@@ -97,8 +107,15 @@ class TargetContact {
   // One pair's force (contact/contact_pair_force.hpp) and where it acts.
   struct PairForce : ContactPairForce {
     Index target = -1;
+    double t = 0.0;                             // t* of the probe's point on its axis
     Vector3d surface_point = Vector3d::Zero();  // closest point of the target's surface (m)
     Vector3d normal = Vector3d::UnitZ();        // outward normal of the target
+    // A capsule at an interior, smooth t*: Δ = x₁ − x₀, Δ̇, H = ∂n/∂x and φ'' = Δᵀ H Δ > 0 for
+    // the motion of t* in the Jacobian (φ'' = 0: t* held fixed).
+    Vector3d axis = Vector3d::Zero();
+    Vector3d axis_rate = Vector3d::Zero();
+    Matrix3d hessian = Matrix3d::Zero();
+    double curvature = 0.0;
   };
   // Where a target is: fixed, or moving with its body.
   struct Frame {
@@ -107,17 +124,28 @@ class TargetContact {
     BodyVelocity velocity;
   };
   Frame CalcFrame(const ContactTarget& target, const VectorXd& q, const VectorXd& v) const;
+  // A probe's axis: its end points and their velocities (equal ends for a sphere).
+  struct Axis {
+    Vector3d x0, x1, v0, v1;
+  };
+  // The point c(t*) of a probe's axis deepest in a target, its velocity and its distance to the
+  // target's surface (in world coordinates).
+  struct ProbePoint {
+    double t = 0.0;
+    Vector3d x, x_dot;
+    Vector3d axis, axis_rate;  // x₁ − x₀ and its rate
+    TargetDistance distance;
+  };
+  ProbePoint FindProbePoint(const ContactTarget& target, const Frame& frame,
+                            const Axis& axis) const;
   // Penetration, normal, ∂n/∂x and the probe's velocity relative to the target's surface.
-  ContactKinematics CalcKinematics(const ContactTarget& target, const Frame& frame,
-                                   const ContactProbe& probe, const Vector3d& x,
-                                   const Vector3d& x_dot) const;
-  PairForce CalcPairForce(const ContactTarget& target, const Frame& frame,
-                          const ContactProbe& probe, const Vector3d& x, const Vector3d& x_dot,
+  ContactKinematics CalcKinematics(const Frame& frame, const ContactProbe& probe,
+                                   const ProbePoint& point) const;
+  PairForce CalcPairForce(const Frame& frame, const ContactProbe& probe, const ProbePoint& point,
                           const ContactPairHistory& history, bool with_jacobian) const;
   // Owner of a probe's blocks in SystemMatrix contact couplings.
   Index ProbeOwner(const ContactProbe& probe) const;
-  void Locate(const ContactProbe& probe, const VectorXd& q, const VectorXd& v, Vector3d* x,
-              Vector3d* x_dot) const;
+  Axis Locate(const ContactProbe& probe, const VectorXd& q, const VectorXd& v) const;
   // Calls visit(probe, force) for every touching (probe, target) pair at (q, v); force.target is
   // the target's index.
   template <class Visit>

@@ -165,8 +165,8 @@ void ReadContact(const YamlValue& value, const std::filesystem::path& scene_dire
                  ModelBuilder* builder) {
   const YamlMap map = value.AsMap();
   map.CheckKeys({"law", "friction", "cable_radius", "point_mass_radius", "points_per_element",
-                 "targets", "self_contact", "self_contact_geometry", "capsules_per_element",
-                 "penetration_increment"});
+                 "targets", "target_geometry", "self_contact", "self_contact_geometry",
+                 "capsules_per_element", "penetration_increment"});
   ContactSpec spec;
   spec.normal = ReadNormalLaw(map.Get("law"));
   if (auto v = map.Find("friction")) spec.friction = ReadFriction(*v);
@@ -179,6 +179,10 @@ void ReadContact(const YamlValue& value, const std::filesystem::path& scene_dire
     spec.self_geometry = v->AsChoice({"capsules", "spheres"}) == 0
                              ? ContactSpec::SelfGeometry::kCapsules
                              : ContactSpec::SelfGeometry::kSpheres;
+  if (auto v = map.Find("target_geometry"))
+    spec.target_geometry = v->AsChoice({"spheres", "capsules"}) == 0
+                               ? ContactSpec::TargetGeometry::kSpheres
+                               : ContactSpec::TargetGeometry::kCapsules;
   if (auto v = map.Find("capsules_per_element")) spec.capsules_per_element = v->AsInt(1, 1000);
   // Targets may be left out when only the threads touch each other.
   if (!spec.self_contact || map.Find("targets"))

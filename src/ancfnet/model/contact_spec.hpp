@@ -3,8 +3,11 @@
 /// sphere, a box, a cylinder, a capsule, a triangle mesh) and with each other: the description.
 /// The forces are made by forces/target_contact.hpp and forces/self_contact.hpp. Cables are
 /// probed by inspection spheres of the thread's radius at points along each element's centre
+/// line, or by a chain of capsules of that radius whose axes are chords of the deformed centre
 /// line; point masses are spheres.
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -55,6 +58,11 @@ struct ContactSpec {
   /// into a target by more than this fraction of its radius within the step, so that impacts are
   /// resolved over several steps instead of absorbed in one; 0: no limit.
   double penetration_increment = 0.05;
+  /// Geometry of the threads against the targets: inspection spheres (the default), or a chain
+  /// of capsules_per_element capsules per element whose axes are the chords between
+  /// ξ = j/n and (j + 1)/n of the deformed centre line (forces/target_contact.hpp).
+  enum class TargetGeometry { kSpheres, kCapsules };
+  TargetGeometry target_geometry = TargetGeometry::kSpheres;
 
   /// Contact of the threads with each other and with the point masses (knots), and of the
   /// point masses with each other (forces/self_contact.hpp).
@@ -63,10 +71,26 @@ struct ContactSpec {
   /// each element's deformed centre line, or its inspection spheres.
   enum class SelfGeometry { kCapsules, kSpheres };
   SelfGeometry self_geometry = SelfGeometry::kCapsules;
-  /// Capsules per cable element; 0: automatic, one per 8 radii of element length, 1 … 8.
+  /// Capsules per cable element, in self-contact and against targets; 0: automatic, one per
+  /// 8 radii of element length, 1 … 8.
   int capsules_per_element = 0;
 
   bool enabled() const { return !targets.empty() || self_contact; }
 };
+
+/// Inspection spheres on a cable element of length L (m) and thread radius r (m):
+/// points_per_element, or ⌈L/2r⌉ clamped to 2 … 32 (2 for r = 0).
+inline int CalcSpheresPerElement(const ContactSpec& spec, double length, double radius) {
+  if (spec.points_per_element > 0) return spec.points_per_element;
+  if (!(radius > 0.0)) return 2;
+  return static_cast<int>(std::clamp(std::ceil(length / (2.0 * radius)), 2.0, 32.0));
+}
+
+/// Capsules on a cable element: capsules_per_element, or ⌈L/8r⌉ clamped to 1 … 8 (1 for r = 0).
+inline int CalcCapsulesPerElement(const ContactSpec& spec, double length, double radius) {
+  if (spec.capsules_per_element > 0) return spec.capsules_per_element;
+  if (!(radius > 0.0)) return 1;
+  return static_cast<int>(std::clamp(std::ceil(length / (8.0 * radius)), 1.0, 8.0));
+}
 
 }  // namespace ancfnet
