@@ -11,9 +11,13 @@ namespace {
 
 NormalLaw ReadNormalLaw(const YamlValue& value) {
   const YamlMap map = value.AsMap();
+  // Without a type: Carvalho–Martins, whose achieved restitution stays closest to its input.
+  constexpr std::size_t kCarvalhoMartins = 6;
   const std::size_t type =
-      map.Get("type").AsChoice({"linear", "hertz", "hunt_crossley", "lankarani_nikravesh", "flores",
-                                "gonthier", "carvalho_martins"});
+      map.Find("type")
+          ? map.Get("type").AsChoice({"linear", "hertz", "hunt_crossley", "lankarani_nikravesh",
+                                      "flores", "gonthier", "carvalho_martins"})
+          : kCarvalhoMartins;
   if (type == 0) {
     map.CheckKeys({"type", "stiffness", "damping"});
     const double damping = map.Find("damping") ? map.Get("damping").AsNonNegative() : 0.0;
