@@ -8,7 +8,7 @@
 
 #include "ancfnet/assembly/system_matrix.hpp"
 #include "ancfnet/forces/target_contact.hpp"
-#include "ancfnet/forces/test/central_difference_jacobian.hpp"
+#include "ancfnet/forces/test/target_contact_check.hpp"
 #include "ancfnet/model/model_builder.hpp"
 #include "ancfnet/state/state.hpp"
 
@@ -59,36 +59,20 @@ void ExpectJacobiansMatch(const Model& model, bool check_stiffness, double toler
   for (Index i = 0; i < 6 * model.num_nodes(); ++i) v[i] += 0.01 * std::sin(1.7 * i + 0.3);
   std::vector<ContactPairHistory> history(static_cast<std::size_t>(CountContactPairs(model)),
                                           {.speed = -0.2, .bristle = bristle_B});
-  const auto forces = [&](const VectorXd& x, const VectorXd& x_dot) {
-    Workspace ws(model);
-    ws.internal_force.setZero();
-    ws.viscous_force.setZero();
-    contact.AddForces(x, x_dot, history, ws);
-    return VectorXd(ws.internal_force);
-  };
   ASSERT_GE(contact.Summarize(state.q, v, history).active, 3);
   // Action and reaction: the body's force balances the cable's.
-  const VectorXd f = forces(state.q, v);
+  const VectorXd f = test::CalcTargetContactForces(model, contact, history, state.q, v);
   const RigidBody& body = model.rigid_bodies()[0];
   Vector3d on_cable = Vector3d::Zero();
   for (Index node = 0; node < model.num_nodes(); ++node)
     on_cable += f.segment<3>(model.NodePositionDof(node));
   EXPECT_LT((on_cable + f.segment<3>(body.position_dof())).norm(), 1e-12 * on_cable.norm());
-  const DofMap all = DofMap::AllCoordinates(model);
   for (const IterationWeights weights :
        {IterationWeights{.mass = 0, .damping = 0, .stiffness = 1},
         IterationWeights{.mass = 0, .damping = 1, .stiffness = 0}}) {
     if (weights.stiffness != 0.0 && !check_stiffness) continue;
-    SystemMatrix matrix(model, all);
-    std::vector<std::pair<Index, Index>> couplings;
-    contact.FindBodyCouplings(state.q, v, 1e-3, matrix, &couplings);
-    matrix.AddContactCouplings(couplings);
-    matrix.SetZero();
-    contact.AddJacobian(state.q, v, history, weights, &matrix);
-    const MatrixXd analytic = MatrixXd(matrix.matrix());
-    const MatrixXd fd =
-        test::CalcCentralDifferenceJacobian(forces, state.q, v, weights.stiffness != 0.0);
-    const double error = (analytic - fd).norm() / fd.norm();
+    const double error =
+        test::CalcTargetContactJacobianError(model, contact, history, state.q, v, weights);
     std::printf("contact with a body, %s Jacobian: relative error %.2e\n",
                 weights.stiffness != 0.0 ? "stiffness" : "damping", error);
     EXPECT_LT(error, tolerance);
