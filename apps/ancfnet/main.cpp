@@ -5,7 +5,6 @@
 // 1 an unexpected internal error (a bug).
 
 #include <fmt/format.h>
-
 #include <omp.h>
 
 #include <CLI/CLI.hpp>
@@ -51,9 +50,10 @@ int RunCommand(const std::string& scene_file, const std::string& output_dir, boo
   if (!quiet)
     fmt::print(
         "{} analysis completed: {} steps, {} Newton iterations, {} Jacobian updates, "
-        "{:.3f} s; results in {}\n",
+        "{} step cuts, {} pattern rebuilds, {:.3f} s; results in {}\n",
         summary.analysis, summary.steps, summary.newton_iterations, summary.jacobian_updates,
-        summary.wall_time_s, options.output_dir.string());
+        summary.step_cuts, summary.pattern_rebuilds, summary.wall_time_s,
+        options.output_dir.string());
   return 0;
 }
 

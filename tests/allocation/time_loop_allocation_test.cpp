@@ -13,6 +13,7 @@
 #include "../verification/verification_scenes.hpp"
 #include "ancfnet/analysis/energy_tracker.hpp"
 #include "ancfnet/contact/mesh/icosphere.hpp"
+#include "ancfnet/forces/self_contact.hpp"
 #include "ancfnet/forces/target_contact.hpp"
 #include "ancfnet/integrators/explicit_verlet.hpp"
 #include "ancfnet/integrators/generalized_alpha.hpp"
@@ -215,6 +216,55 @@ TEST(TimeLoopAllocation, GeneralizedAlphaWithMeshContact) {
   const TargetContact contact(model);
   EXPECT_GT(contact.Summarize(state.q, state.v, state.contact_history).active, 0);
   EXPECT_EQ(count, 0) << "heap requests in 40 generalised-α steps with mesh contact";
+}
+
+// A slack thread draped by gravity across a taut one, both pinned, with self-contact: once the
+// contact couplings of the crossing are in the pattern (the warm-up steps), the steps search for
+// pairs, evaluate them and keep the pattern without reaching the heap.
+TEST(TimeLoopAllocation, GeneralizedAlphaWithSelfContact) {
+  constexpr double kRadius = 0.001;
+  CableProperties p =
+      MakeCableProperties({.youngs_modulus = 3e9, .density = 1140, .axial_damping_time = 1e-4},
+                          MakeCircleSection(2 * kRadius));
+  ModelBuilder builder;
+  builder.SetGravity(Vector3d(0, 0, -9.81));
+  builder.AddCable({.name = "a",
+                    .start = Vector3d(-0.5, 0, 0),
+                    .end = Vector3d(0.5, 0, 0),
+                    .num_elements = 9,
+                    .properties = p,
+                    .natural_length = 0.999});
+  builder.AddCable({.name = "b",
+                    .start = Vector3d(0, -0.5, 2 * kRadius - 1e-5),
+                    .end = Vector3d(0, 0.5, 2 * kRadius - 1e-5),
+                    .num_elements = 9,
+                    .properties = p});
+  for (const char* cable : {"a", "b"}) {
+    builder.AddPin({cable, 0.0});
+    builder.AddPin({cable, 1.0});
+  }
+  ContactSpec spec;
+  spec.normal = MakeDissipativeContactLaw(NormalLawKind::kCarvalhoMartins, 1e6, 0.5);
+  spec.self_contact = true;
+  builder.SetContact(spec);
+  const Model model = builder.Build();
+  GeneralizedAlphaIntegrator integrator(model, DynamicSettings{});
+  State state = MakeInitialState(model);
+  ASSERT_TRUE(integrator.Initialize(&state));
+  for (int i = 0; i < 100; ++i) ASSERT_TRUE(integrator.Step(1e-4, &state).accepted);
+  int rebuilds = 0;
+  const long count = CountAllocations([&] {
+    for (int i = 0; i < 40; ++i) {
+      const StepOutcome outcome = integrator.Step(1e-4, &state);
+      EXPECT_TRUE(outcome.accepted);
+      rebuilds += outcome.pattern_rebuilds;
+    }
+  });
+  SelfContact watch(model);
+  watch.FindCandidates(state, 0.0);
+  EXPECT_GT(watch.Summarize(state.q, state.v).active, 0);
+  EXPECT_EQ(rebuilds, 0);
+  EXPECT_EQ(count, 0) << "heap requests in 40 generalised-α steps with self-contact";
 }
 
 TEST(TimeLoopAllocation, ExplicitVerlet) {

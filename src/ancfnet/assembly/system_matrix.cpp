@@ -17,12 +17,23 @@ int FindSlot(const SparseMatrixd& m, Index row, Index col) {
   return static_cast<int>(it - m.innerIndexPtr());
 }
 
-// The coordinates of a group of 3-blocks, in order.
-std::vector<Index> GroupCoordinates(const std::vector<Index>& blocks) {
-  std::vector<Index> coordinates;
+// The unknowns of the coordinates of a group of 3-blocks, in order (−1 for a fixed one).
+void GroupUnknowns(const DofMap& dofs, const std::vector<Index>& blocks, std::vector<Index>* out) {
+  out->clear();
   for (Index first : blocks)
-    for (int k = 0; k < 3; ++k) coordinates.push_back(first + k);
-  return coordinates;
+    for (int k = 0; k < 3; ++k) out->push_back(dofs.unknown(first + k));
+}
+
+// Entries (row, col) of every free row of `rows` and free column of `cols`.
+void AddPatternEntries(const std::vector<Index>& rows, const std::vector<Index>& cols,
+                       std::vector<Eigen::Triplet<double, int>>* triplets) {
+  for (Index col : cols)
+    for (Index row : rows)
+      if (row >= 0 && col >= 0) triplets->emplace_back(row, col, 0.0);
+}
+
+std::uint64_t PairKey(Index a, Index b) {
+  return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint64_t>(b);
 }
 
 }  // namespace
@@ -52,19 +63,24 @@ SystemMatrix::SystemMatrix(const Model& model, const DofMap& dofs)
     group.push_back(body.rotation_dof());
     group_blocks_.push_back(group);
   }
-  num_model_groups_ = group_blocks_.size();
   Rebuild();
 }
 
 void SystemMatrix::Rebuild() {
+  ++num_pattern_builds_;
   const DofMap& dofs = *dofs_;
+  std::vector<Index> rows, cols;
   std::vector<Eigen::Triplet<double, int>> triplets;
   for (const auto& group : group_blocks_) {
-    const std::vector<Index> coordinates = GroupCoordinates(group);
-    for (Index c : coordinates)
-      for (Index r : coordinates)
-        if (dofs.unknown(r) >= 0 && dofs.unknown(c) >= 0)
-          triplets.emplace_back(dofs.unknown(r), dofs.unknown(c), 0.0);
+    GroupUnknowns(dofs, group, &rows);
+    AddPatternEntries(rows, rows, &triplets);
+  }
+  // The diagonal blocks of a coupling are its owners' own groups: only those between them are new.
+  for (const ContactCoupling& c : couplings_) {
+    GroupUnknowns(dofs, group_blocks_[c.a], &rows);
+    GroupUnknowns(dofs, group_blocks_[c.b], &cols);
+    AddPatternEntries(rows, cols, &triplets);
+    AddPatternEntries(cols, rows, &triplets);
   }
   matrix_ = SparseMatrixd(dofs.num_unknowns(), dofs.num_unknowns());
   matrix_.setFromTriplets(triplets.begin(), triplets.end());
@@ -72,43 +88,78 @@ void SystemMatrix::Rebuild() {
 
   groups_.clear();
   slot_.clear();
-  for (const auto& group : group_blocks_) {
-    const std::vector<Index> coordinates = GroupCoordinates(group);
-    groups_.push_back({static_cast<int>(group.size()), slot_.size()});
-    for (Index c : coordinates)
-      for (Index r : coordinates) {
-        const Index row = dofs.unknown(r);
-        const Index col = dofs.unknown(c);
+  auto add_group = [&](const std::vector<Index>& unknowns) {
+    groups_.push_back({static_cast<int>(unknowns.size() / 3), slot_.size()});
+    for (Index col : unknowns)
+      for (Index row : unknowns)
         slot_.push_back(row >= 0 && col >= 0 ? FindSlot(matrix_, row, col) : -1);
-      }
+  };
+  for (const auto& group : group_blocks_) {
+    GroupUnknowns(dofs, group, &rows);
+    add_group(rows);
+  }
+  for (const ContactCoupling& c : couplings_) {
+    GroupUnknowns(dofs, group_blocks_[c.a], &rows);
+    GroupUnknowns(dofs, group_blocks_[c.b], &cols);
+    rows.insert(rows.end(), cols.begin(), cols.end());
+    add_group(rows);
   }
 }
 
-bool SystemMatrix::AddContactCouplings(const std::vector<std::pair<Index, Index>>& owners) {
-  bool changed = false;
-  for (auto [a, b] : owners) {
-    if (a > b) std::swap(a, b);
-    const std::uint64_t key = (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint64_t>(b);
-    const int index = static_cast<int>(group_blocks_.size() - num_model_groups_);
-    if (!contact_coupling_.emplace(key, index).second) continue;
-    std::vector<Index> group = group_blocks_[a];
-    group.insert(group.end(), group_blocks_[b].begin(), group_blocks_[b].end());
-    group_blocks_.push_back(std::move(group));
-    changed = true;
+bool SystemMatrix::MarkNear(Index a, Index b) {
+  if (a > b) std::swap(a, b);
+  const auto it = contact_coupling_.find(PairKey(a, b));
+  if (it == contact_coupling_.end()) return false;
+  couplings_[it->second].last_near = num_updates_;
+  return true;
+}
+
+bool SystemMatrix::UpdateContactCouplings(const std::vector<std::pair<Index, Index>>& required,
+                                          const std::vector<std::pair<Index, Index>>& near) {
+  ++num_updates_;
+  for (const auto& [a, b] : near) MarkNear(a, b);
+  bool missing = false;
+  for (const auto& [a, b] : required) missing = !MarkNear(a, b) || missing;
+  const int keep = coupling_settings_.keep_updates;
+  if (!missing) {
+    if (keep < 0) return false;
+    const auto stale = std::count_if(couplings_.begin(), couplings_.end(), [&](const auto& c) {
+      return num_updates_ - c.last_near > keep;
+    });
+    if (stale == 0 || static_cast<double>(stale) <= coupling_settings_.max_stale_fraction *
+                                                        static_cast<double>(couplings_.size()))
+      return false;
   }
-  if (changed) Rebuild();
-  return changed;
+  RebuildContactCouplings(required, near);
+  return true;
+}
+
+void SystemMatrix::RebuildContactCouplings(const std::vector<std::pair<Index, Index>>& required,
+                                           const std::vector<std::pair<Index, Index>>& near) {
+  const int keep = coupling_settings_.keep_updates;
+  if (keep >= 0)
+    std::erase_if(couplings_,
+                  [&](const ContactCoupling& c) { return num_updates_ - c.last_near > keep; });
+  contact_coupling_.clear();
+  for (std::size_t i = 0; i < couplings_.size(); ++i)
+    contact_coupling_.emplace(PairKey(couplings_[i].a, couplings_[i].b), static_cast<int>(i));
+  for (const auto* owners : {&required, &near})
+    for (auto [a, b] : *owners) {
+      if (a > b) std::swap(a, b);
+      if (contact_coupling_.emplace(PairKey(a, b), static_cast<int>(couplings_.size())).second)
+        couplings_.push_back({a, b, num_updates_});
+    }
+  Rebuild();
 }
 
 int SystemMatrix::FindContactCoupling(Index a, Index b) const {
-  const auto it =
-      contact_coupling_.find((static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint64_t>(b));
+  const auto it = contact_coupling_.find(PairKey(a, b));
   return it == contact_coupling_.end() ? -1 : it->second;
 }
 
 void SystemMatrix::AddContactBlock(int coupling, int i, int j, const Matrix3d& block,
                                    double scale) {
-  AddGroupBlock(groups_[num_model_groups_ + coupling], i, j, block, scale);
+  AddGroupBlock(groups_[group_blocks_.size() + coupling], i, j, block, scale);
 }
 
 void SystemMatrix::SetZero() {

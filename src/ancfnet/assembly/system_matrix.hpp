@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "ancfnet/assembly/contact_coupling_settings.hpp"
 #include "ancfnet/assembly/dof_map.hpp"
 #include "ancfnet/common/types.hpp"
 
@@ -17,8 +18,9 @@ class Model;
 /// The couplings are groups of 3-coordinate blocks whose coordinates interact: each cable element
 /// (its blocks r_A, r'_A, r_B, r'_B), each point mass (one block), each spring-damper link
 /// (the blocks of its first point, then of its second), each rigid body (x, ψ), each body
-/// attachment (the blocks of its point, then the body's x and ψ), and the contact couplings added
-/// while the model moves (the blocks of one owner, an element or a point mass, then of the other).
+/// attachment (the blocks of its point, then the body's x and ψ), and the contact couplings that
+/// come and go while the model moves (the blocks of one owner, an element, a point mass or a
+/// body, then of the other).
 class SystemMatrix {
  public:
   /// Pattern of the model's couplings between unknowns of `dofs`; values zero.
@@ -35,10 +37,28 @@ class SystemMatrix {
   /// blocks numbered first point's then second point's.
   void AddLinkBlock(Index link, int i, int j, const Matrix3d& block, double scale = 1.0);
   /// Owners of contact couplings: element e is owner e, point mass m is owner
-  /// num_elements + m, rigid body b is BodyOwner(b). Adds a coupling group for every pair of owners (a, b) not yet coupled
-  /// (a = b is allowed) and rebuilds the pattern; returns true when it changed, which makes any
-  /// factorisation of the old pattern invalid. Couplings are never removed.
-  bool AddContactCouplings(const std::vector<std::pair<Index, Index>>& owners);
+  /// num_elements + m, rigid body b is BodyOwner(b). A coupling of owners (a, b) (a = b is
+  /// allowed) is a group of a's blocks then b's. One update per attempted step: the couplings of
+  /// `near` and `required` pairs are marked as near now. The pattern is rebuilt when a `required`
+  /// pair is not coupled, or when more than settings.max_stale_fraction of the couplings are
+  /// stale (not near for more than settings.keep_updates updates); a rebuild drops the stale
+  /// couplings and couples every pair of both lists. Returns true when it rebuilt the pattern,
+  /// which makes any factorisation of the old one invalid and renumbers the couplings. Allocates
+  /// only when it rebuilds (docs/theory.md, "Contact couplings that come and go").
+  bool UpdateContactCouplings(const std::vector<std::pair<Index, Index>>& required,
+                              const std::vector<std::pair<Index, Index>>& near);
+  /// Couples every pair of `owners` now: UpdateContactCouplings(owners, owners).
+  bool AddContactCouplings(const std::vector<std::pair<Index, Index>>& owners) {
+    return UpdateContactCouplings(owners, owners);
+  }
+  /// Retention of the contact couplings (the defaults of ContactCouplingSettings until set).
+  void set_contact_coupling_settings(const ContactCouplingSettings& settings) {
+    coupling_settings_ = settings;
+  }
+  /// Number of contact couplings in the pattern.
+  int num_contact_couplings() const { return static_cast<int>(couplings_.size()); }
+  /// Number of times the pattern was built (1 after construction).
+  long num_pattern_builds() const { return num_pattern_builds_; }
   /// The owner of rigid body b's blocks (x, ψ) in contact couplings.
   Index BodyOwner(Index b) const { return num_elements_ + num_point_masses_ + num_links_ + b; }
   /// Index of the coupling of owners (a, b) with a ≤ b, or −1. Its blocks are a's then b's.
@@ -60,16 +80,28 @@ class SystemMatrix {
     int num_blocks = 0;
     std::size_t first_slot = 0;  // slots of entry (i, j) at first_slot + 3 num_blocks j + i
   };
+  struct ContactCoupling {
+    Index a = 0, b = 0;  // owners, a ≤ b
+    long last_near = 0;  // update at which its pair was last near
+  };
   void AddGroupBlock(const Group& group, int i, int j, const Matrix3d& block, double scale);
-  // The pattern and the slots of every group from group_blocks_.
+  // Marks the coupling of (a, b) near; false when there is none.
+  bool MarkNear(Index a, Index b);
+  // Drops the stale couplings, adds those of `required` and `near` that are missing, rebuilds.
+  void RebuildContactCouplings(const std::vector<std::pair<Index, Index>>& required,
+                               const std::vector<std::pair<Index, Index>>& near);
+  // The pattern and the slots of every group from group_blocks_ and couplings_.
   void Rebuild();
 
   const DofMap* dofs_;
-  std::vector<std::vector<Index>> group_blocks_;  // first coordinate of each block, per group
-  std::size_t num_model_groups_ = 0;              // groups before the contact couplings
+  std::vector<std::vector<Index>> group_blocks_;  // first coordinate of each block, per model group
+  std::vector<ContactCoupling> couplings_;
   std::unordered_map<std::uint64_t, int> contact_coupling_;  // (a, b) packed → coupling
+  ContactCouplingSettings coupling_settings_;
+  long num_updates_ = 0;
+  long num_pattern_builds_ = 0;
   SparseMatrixd matrix_;
-  std::vector<Group> groups_;  // elements, point masses, links, bodies, then attachments
+  std::vector<Group> groups_;  // elements, point masses, links, bodies, attachments, couplings
   Index num_elements_ = 0;
   Index num_point_masses_ = 0;
   Index num_links_ = 0;

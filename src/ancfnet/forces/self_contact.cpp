@@ -16,8 +16,11 @@ constexpr double kMaxPenetrationRatio = 0.5;
 
 }  // namespace
 
-SelfContact::SelfContact(const Model& model)
-    : model_(model), primitives_(MakeSelfContactPrimitives(model)), filter_(model, primitives_) {}
+SelfContact::SelfContact(const Model& model, double near_factor)
+    : model_(model),
+      primitives_(MakeSelfContactPrimitives(model)),
+      filter_(model, primitives_),
+      near_factor_(std::max(near_factor, 1.0)) {}
 
 SelfContact::Axis SelfContact::Locate(const SelfContactPrimitive& p, const VectorXd& q,
                                       const VectorXd& v) const {
@@ -111,13 +114,14 @@ void SelfContact::FindCandidates(const State& state, double h) {
   for (std::size_t i = 0; i < n; ++i) {
     const Axis axis = Locate(primitives_[i], state.q, state.v);
     margin_[i] = 2.0 * h * std::max(axis.v0.norm(), axis.v1.norm()) + 0.5 * primitives_[i].radius;
-    boxes_[i] = Aabb::OfCapsule(axis.x0, axis.x1, primitives_[i].radius, margin_[i]);
+    boxes_[i] = Aabb::OfCapsule(axis.x0, axis.x1, primitives_[i].radius, near_factor_ * margin_[i]);
     start_x0_[i] = axis.x0;
     start_x1_[i] = axis.x1;
   }
   broad_phase_.FindOverlaps(boxes_, &overlaps_);
   candidates_.clear();
   owners_.clear();
+  near_owners_.clear();
   const double min_speed = model_.contact().normal.min_approach_speed;
   const auto& history = state.self_contact_history;
   for (const auto& [a, b] : overlaps_) {
@@ -126,6 +130,8 @@ void SelfContact::FindCandidates(const State& state, double h) {
     c.a = a;
     c.b = b;
     const PairState pair = CalcPair(c, state.q, state.v, PairDetail::kGeometry);
+    if (pair.gap > near_factor_ * (margin_[a] + margin_[b])) continue;
+    near_owners_.emplace_back(primitives_[a].owner, primitives_[b].owner);
     if (pair.gap > margin_[a] + margin_[b]) continue;
     c.direction_start = pair.direction;
     const auto it = std::lower_bound(history.begin(), history.end(), c,

@@ -25,18 +25,22 @@ namespace ancfnet {
 
 class SelfContact {
  public:
-  explicit SelfContact(const Model& model);
+  /// `near_factor` ≥ 1: the slack s of near_owners() (ContactCouplingSettings::near_factor).
+  explicit SelfContact(const Model& model, double near_factor = 1.0);
   bool empty() const { return primitives_.empty(); }
   const std::vector<SelfContactPrimitive>& primitives() const { return primitives_; }
 
   /// At the state that starts a step of size h: the pairs, not excluded, whose gap is below the
   /// sum of their search margins m = 2 h max |ẋ| + r/2 (each end's speed, the primitive's
-  /// radius), with the history of each; h is also the step over which the LuGre law's bristles
-  /// are advanced (TargetContact::SetStepSize; 0: the forces at the state, for outputs).
-  /// Allocates only while its storage grows.
+  /// radius), with the history of each; and the near pairs, whose gap is below s times that
+  /// sum. h is also the step over which the LuGre law's bristles are advanced
+  /// (TargetContact::SetStepSize; 0: the forces at the state, for outputs). Allocates only while
+  /// its storage grows.
   void FindCandidates(const State& state, double h);
-  /// Owners (SystemMatrix::AddContactCouplings) of the candidate pairs.
+  /// Owners (SystemMatrix::UpdateContactCouplings) of the candidate pairs.
   const std::vector<std::pair<Index, Index>>& candidate_owners() const { return owners_; }
+  /// Owners of the near pairs (the candidates' among them): the couplings worth keeping.
+  const std::vector<std::pair<Index, Index>>& near_owners() const { return near_owners_; }
   /// Number of candidate pairs.
   int num_candidates() const { return static_cast<int>(candidates_.size()); }
 
@@ -113,6 +117,8 @@ class SelfContact {
   std::vector<Candidate> candidates_;
   std::vector<std::pair<Index, Index>> owners_;
   double step_ = 0.0;  // h of FindCandidates
+  std::vector<std::pair<Index, Index>> near_owners_;
+  double near_factor_ = 1.0;
 };
 
 }  // namespace ancfnet

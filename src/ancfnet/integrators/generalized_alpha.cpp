@@ -97,7 +97,7 @@ bool GeneralizedAlphaIntegrator::Initialize(State* state) {
 }
 
 StepOutcome GeneralizedAlphaIntegrator::Step(double h, State* state) {
-  core_.BeginStep(h, *state);
+  const bool rebuilt = core_.BeginStep(h, *state);
   StepProblem problem(*this, h, *state);
   predictor_ = Predictor::kConstantAcceleration;
   problem.Reset();
@@ -120,6 +120,7 @@ StepOutcome GeneralizedAlphaIntegrator::Step(double h, State* state) {
   StepOutcome outcome{.accepted = result.converged,
                       .newton_iterations = result.iterations,
                       .jacobian_updates = result.jacobian_updates,
+                      .pattern_rebuilds = rebuilt ? 1 : 0,
                       .failure = result.failure};
   const State& previous = core_.previous();
   if (!result.converged) {

@@ -70,13 +70,14 @@ bool ImplicitMidpointIntegrator::Initialize(State* state) {
 }
 
 StepOutcome ImplicitMidpointIntegrator::Step(double h, State* state) {
-  core_.BeginStep(h, *state);
+  const bool rebuilt = core_.BeginStep(h, *state);
   StepProblem problem(*this, h, *state);
   problem.Reset();
   const NewtonResult result = core_.Solve(problem);
   StepOutcome outcome{.accepted = result.converged,
                       .newton_iterations = result.iterations,
                       .jacobian_updates = result.jacobian_updates,
+                      .pattern_rebuilds = rebuilt ? 1 : 0,
                       .failure = result.failure};
   const State& previous = core_.previous();
   if (result.converged) {

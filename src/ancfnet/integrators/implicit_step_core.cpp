@@ -9,7 +9,7 @@ ImplicitStepCore::ImplicitStepCore(const Model& model, const DynamicSettings& se
     : model_(model),
       damping_(model),
       contact_(model),
-      self_contact_(model),
+      self_contact_(model, settings.contact_couplings.near_factor),
       ws_(model),
       dofs_(DofMap::FreeCoordinates(model)),
       iteration_matrix_(model, dofs_),
@@ -21,6 +21,7 @@ ImplicitStepCore::ImplicitStepCore(const Model& model, const DynamicSettings& se
   AssembleMassMatrix(model, ws_, &mass);
   mass_ = mass.matrix();
   contact_.SetBodyRotations(&ws_.body_rotation);
+  iteration_matrix_.set_contact_coupling_settings(settings.contact_couplings);
 }
 
 bool ImplicitStepCore::Initialize(State* state) {
@@ -32,7 +33,7 @@ bool ImplicitStepCore::Initialize(State* state) {
   return true;
 }
 
-void ImplicitStepCore::BeginStep(double h, const State& state) {
+bool ImplicitStepCore::BeginStep(double h, const State& state) {
   previous_.t = state.t;
   previous_.q = state.q;
   previous_.v = state.v;
@@ -43,15 +44,25 @@ void ImplicitStepCore::BeginStep(double h, const State& state) {
   if (h != last_h_) newton_.InvalidateJacobian();
   last_h_ = h;
   contact_.SetStepSize(h);
+  if (self_contact_.empty() && contact_.empty()) return false;
+  required_couplings_.clear();
+  near_couplings_.clear();
+  auto append = [](const std::vector<std::pair<Index, Index>>& from,
+                   std::vector<std::pair<Index, Index>>* to) {
+    to->insert(to->end(), from.begin(), from.end());
+  };
   if (!self_contact_.empty()) {
     self_contact_.FindCandidates(state, h);
-    if (iteration_matrix_.AddContactCouplings(self_contact_.candidate_owners()))
-      newton_.InvalidatePattern();
+    append(self_contact_.candidate_owners(), &required_couplings_);
+    append(self_contact_.near_owners(), &near_couplings_);
   }
   if (!contact_.empty()) {
     contact_.FindBodyCouplings(state.q, state.v, h, iteration_matrix_, &body_couplings_);
-    if (iteration_matrix_.AddContactCouplings(body_couplings_)) newton_.InvalidatePattern();
+    append(body_couplings_, &required_couplings_);
   }
+  if (!iteration_matrix_.UpdateContactCouplings(required_couplings_, near_couplings_)) return false;
+  newton_.InvalidatePattern();
+  return true;
 }
 
 std::string ImplicitStepCore::CheckStep(const VectorXd& q, const VectorXd& v) const {

@@ -24,9 +24,10 @@ class ImplicitStepCore {
   /// Saves the state at t_n (its contact history and body rotations included; ws() evaluates the
   /// bodies with the latter until AcceptStep); drops the factorisation when h changed (the
   /// iteration matrix depends on h; so do the contacts' LuGre bristles, stepped over h). Finds
-  /// the self-contact pairs to watch during the step and
-  /// adds their couplings to the iteration matrix (a new pattern is analysed anew).
-  void BeginStep(double h, const State& state);
+  /// the self-contact pairs to watch during the step and the probes near a body, and updates the
+  /// contact couplings of the iteration matrix; true when that gave it a new pattern (which the
+  /// linear solver then analyses anew).
+  bool BeginStep(double h, const State& state);
   /// Empty when a converged step to (q, v) may be accepted, else why not (self-contact search
   /// margin exceeded, threads passed through each other, a probe sank too far into a target).
   std::string CheckStep(const VectorXd& q, const VectorXd& v) const;
@@ -61,6 +62,8 @@ class ImplicitStepCore {
   TargetContact contact_;
   SelfContact self_contact_;
   std::vector<std::pair<Index, Index>> body_couplings_;  // probes near targets on bodies
+  // Owner pairs that must be coupled in this step, and those worth coupling.
+  std::vector<std::pair<Index, Index>> required_couplings_, near_couplings_;
   Workspace ws_;
   DofMap dofs_;
   SystemMatrix iteration_matrix_;

@@ -9,7 +9,8 @@ struct StepOutcome {
   bool accepted = false;
   int newton_iterations = 0;
   int jacobian_updates = 0;
-  std::string failure;  ///< why the step was rejected
+  int pattern_rebuilds = 0;  ///< of the iteration matrix, for contact couplings that came or went
+  std::string failure;       ///< why the step was rejected
 };
 
 }  // namespace ancfnet

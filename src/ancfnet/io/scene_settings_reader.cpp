@@ -47,6 +47,15 @@ void ReadDynamicSettings(const YamlMap& map, DynamicSettings* dynamics) {
                                    {"adaptive", JacobianUpdate::kAdaptive}});
   }
   ReadNewtonSettings(map, &dynamics->newton);
+  if (auto v = map.Find("contact_couplings")) {
+    const YamlMap couplings = v->AsMap();
+    couplings.CheckKeys({"near_factor", "keep_updates", "max_stale_fraction"});
+    ContactCouplingSettings& c = dynamics->contact_couplings;
+    if (auto w = couplings.Find("near_factor")) c.near_factor = w->AsNumberIn(1.0, 100.0);
+    if (auto w = couplings.Find("keep_updates")) c.keep_updates = w->AsInt(-1);
+    if (auto w = couplings.Find("max_stale_fraction"))
+      c.max_stale_fraction = w->AsNumberIn(0.0, 1.0);
+  }
 }
 
 }  // namespace
@@ -55,7 +64,8 @@ AnalysisSettings ReadAnalysisSettings(const YamlValue& analysis) {
   const YamlMap map = analysis.AsMap();
   map.CheckKeys({"type", "load_steps", "max_step_cuts", "line_search", "integrator",
                  "spectral_radius", "time_step", "end_time", "min_time_step", "jacobian_update",
-                 "max_iterations", "relative_tolerance", "absolute_tolerance"});
+                 "max_iterations", "relative_tolerance", "absolute_tolerance",
+                 "contact_couplings"});
   AnalysisSettings settings;
   settings.type = map.Get("type").AsEnum<AnalysisType>(
       {{"static", AnalysisType::kStatic}, {"dynamic", AnalysisType::kDynamic}});

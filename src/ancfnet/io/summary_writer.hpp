@@ -23,6 +23,7 @@ struct RunSummary {
   long newton_iterations = 0;
   long jacobian_updates = 0;
   long step_cuts = 0;
+  long pattern_rebuilds = 0;           ///< new patterns of the iteration matrix (contact)
   long outputs = 0;                    ///< output steps written (rows of probes.csv)
   double wall_time_s = 0.0;            ///< whole analysis, outputs included (s)
   double output_time_s = 0.0;          ///< part of it spent writing probes.csv and VTK frames (s)
@@ -33,9 +34,9 @@ struct RunSummary {
 /// Writes `summary` and the final values of `probes` (EvaluateProbe on `state` with
 /// summary.energy and `contacts`, the active contacts at `state`) to `path` as JSON, indented by 2:
 /// `{"status": "completed"|"failed", "message", "analysis", "time", "steps", "newton_iterations",
-/// "jacobian_updates", "step_cuts", "wall_time_s", "output_time_s", "energy": {"kinetic", "strain",
-/// "gravity", "work", "dissipated", "balance"}, "failures": [{"time", "what", "tension"}],
-/// "probes": {NAME: {"position": [x, y, z]} |
+/// "jacobian_updates", "step_cuts", "pattern_rebuilds", "wall_time_s", "output_time_s", "energy":
+/// {"kinetic", "strain", "gravity", "work", "dissipated", "balance"}, "failures": [{"time", "what",
+/// "tension"}], "probes": {NAME: {"position": [x, y, z]} |
 /// {"velocity": [vx, vy, vz]} | {"energy": {"kinetic", …}} | {"contact": {"active",
 /// "normal_force", "friction_force", "force": [fx, fy, fz], "moment": [mx, my, mz],
 /// "max_penetration"}} | …}}`. Units as in the CSV (s, m, m/s,

@@ -121,6 +121,7 @@ RunSummary RunScene(const Scene& scene, const RunOptions& options) {
   summary.newton_iterations = result.statistics.newton_iterations;
   summary.jacobian_updates = result.statistics.jacobian_updates;
   summary.step_cuts = result.statistics.step_cuts;
+  summary.pattern_rebuilds = result.statistics.pattern_rebuilds;
   summary.outputs = outputs;
   summary.wall_time_s = progress.elapsed_s();
   summary.output_time_s = std::chrono::duration<double>(output_time).count();

@@ -2,6 +2,8 @@
 /// @file Options of the static and dynamic analyses: one description serves the YAML loader, the
 /// CLI and (later) Python. Defaults are the documented defaults of docs/scene-format.md.
 
+#include "ancfnet/assembly/contact_coupling_settings.hpp"
+
 namespace ancfnet {
 
 /// Convergence of Newton iterations: converged when the weighted RMS norm of the last increment,
@@ -34,6 +36,7 @@ struct DynamicSettings {
   double min_time_step = 0.0;    ///< smallest step after cuts (s); 0: time_step / 2¹⁰
   JacobianUpdate jacobian_update = JacobianUpdate::kAdaptive;
   NewtonSettings newton;
+  ContactCouplingSettings contact_couplings;  ///< of the implicit integrators' iteration matrix
 };
 
 /// When the static solver damps Newton steps (Deuflhard's natural monotonicity test).

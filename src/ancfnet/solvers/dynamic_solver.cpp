@@ -45,6 +45,7 @@ SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings, dou
     const StepOutcome outcome = integrator.Step(h, state);
     result.statistics.newton_iterations += outcome.newton_iterations;
     result.statistics.jacobian_updates += outcome.jacobian_updates;
+    result.statistics.pattern_rebuilds += outcome.pattern_rebuilds;
     if (!outcome.accepted) {
       ++result.statistics.step_cuts;
       accepted_in_a_row = 0;

@@ -15,6 +15,7 @@ struct SolveStatistics {
   long newton_iterations = 0;  ///< all iterations, rejected attempts included
   long jacobian_updates = 0;   ///< factorisations of the iteration matrix
   long step_cuts = 0;          ///< rejected attempts followed by a smaller step
+  long pattern_rebuilds = 0;   ///< new patterns of the iteration matrix (contact couplings)
 };
 
 struct SolveResult {

@@ -314,6 +314,7 @@ RunSummary MakeSummary() {
   summary.steps = 150;
   summary.newton_iterations = 420;
   summary.jacobian_updates = 37;
+  summary.pattern_rebuilds = 5;
   summary.step_cuts = 2;
   summary.wall_time_s = 0.75;
   summary.energy = MakeEnergy();
@@ -338,6 +339,7 @@ TEST(SummaryWriter, WritesCountersEnergiesAndFinalProbeValues) {
   EXPECT_EQ(json["steps"], 150);
   EXPECT_EQ(json["newton_iterations"], 420);
   EXPECT_EQ(json["jacobian_updates"], 37);
+  EXPECT_EQ(json["pattern_rebuilds"], 5);
   EXPECT_EQ(json["step_cuts"], 2);
   EXPECT_EQ(json["wall_time_s"], 0.75);
   const nlohmann::json& energy = json["energy"];

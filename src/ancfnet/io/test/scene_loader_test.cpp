@@ -153,6 +153,7 @@ TEST(SceneLoaderTest, ReadsEveryAnalysisAndOutputKey) {
   max_iterations: 7
   relative_tolerance: 1.0e-5
   absolute_tolerance: 1.0e-9
+  contact_couplings: {near_factor: 2, keep_updates: -1, max_stale_fraction: 0.25}
 output: {interval: 0.01, vtk: false, vtk_points_per_element: 2}
 )"));
   const AnalysisSettings& a = scene.analysis;
@@ -166,6 +167,9 @@ output: {interval: 0.01, vtk: false, vtk_points_per_element: 2}
   EXPECT_DOUBLE_EQ(a.dynamics.end_time, 3.0);
   EXPECT_DOUBLE_EQ(a.dynamics.min_time_step, 1e-6);
   EXPECT_EQ(a.dynamics.jacobian_update, JacobianUpdate::kEveryStep);
+  EXPECT_DOUBLE_EQ(a.dynamics.contact_couplings.near_factor, 2.0);
+  EXPECT_EQ(a.dynamics.contact_couplings.keep_updates, -1);
+  EXPECT_DOUBLE_EQ(a.dynamics.contact_couplings.max_stale_fraction, 0.25);
   // Newton keys set both analyses.
   for (const NewtonSettings* newton : {&a.statics.newton, &a.dynamics.newton}) {
     EXPECT_EQ(newton->max_iterations, 7);
