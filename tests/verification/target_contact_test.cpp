@@ -112,7 +112,7 @@ TEST(TargetContact, CoarseStepImpactIsResolvedByThePenetrationControl) {
   const NormalLaw law = MakeHertzContactLaw(1e7);
   const double delta_max = std::pow(5.0 * kMass * kSpeed * kSpeed / (4.0 * law.stiffness), 0.4);
   const double hertz_time = 2.943275 * delta_max / kSpeed;
-  auto strike = [&](double increment, long* cuts) {
+  auto strike = [&](double increment, long* cuts, double min_step = 0.0) {
     ModelBuilder builder;
     builder.AddPointMass("ball", kMass, Vector3d(0, 0, kRadius + 1e-4), Vector3d(0, 0, -kSpeed));
     ContactSpec spec = PlaneContact(law);
@@ -123,6 +123,7 @@ TEST(TargetContact, CoarseStepImpactIsResolvedByThePenetrationControl) {
     settings.integrator = IntegratorType::kImplicitMidpoint;
     settings.time_step = hertz_time;
     settings.end_time = 3.0 * hertz_time;
+    settings.min_time_step = min_step;
     State state = MakeInitialState(model);
     double deepest = 0.0;
     const SolveResult result = SolveDynamic(
@@ -149,6 +150,13 @@ TEST(TargetContact, CoarseStepImpactIsResolvedByThePenetrationControl) {
   EXPECT_NEAR(deep_on / delta_max, 1.0, 0.01);
   EXPECT_NEAR(rebound_on, kSpeed, 0.02 * kSpeed);
   EXPECT_GT(cuts_on, 0);
+  // A step that may not be cut (the smallest step is the nominal one) is accepted however deep
+  // the sphere sinks: the control never stops a run.
+  long cuts_none = 0;
+  const auto [deep_none, rebound_none] = strike(0.002, &cuts_none, hertz_time);
+  EXPECT_EQ(cuts_none, 0);
+  EXPECT_EQ(deep_none, deep_off);
+  EXPECT_EQ(rebound_none, rebound_off);
 }
 
 // A block (point mass) resting on a plane tilted by θ about y, under gravity, with tanh friction

@@ -15,6 +15,7 @@ ImplicitStepCore::ImplicitStepCore(const Model& model, const DynamicSettings& se
       iteration_matrix_(model, dofs_),
       newton_(settings.newton, settings.jacobian_update, /*line_search=*/false),
       newton_settings_(settings.newton),
+      smallest_step_(settings.smallest_step()),
       residual_full_(model.num_dofs()) {
   const DofMap all = DofMap::AllCoordinates(model);
   SystemMatrix mass(model, all);
@@ -70,7 +71,8 @@ std::string ImplicitStepCore::CheckStep(const VectorXd& q, const VectorXd& v) co
     std::string failure = self_contact_.CheckStep(q);
     if (!failure.empty()) return failure;
   }
-  return contact_.empty() ? std::string() : contact_.CheckStep(previous_.q, previous_.v, q, v);
+  if (contact_.empty() || 0.5 * last_h_ < smallest_step_) return {};
+  return contact_.CheckStep(previous_.q, previous_.v, q, v);
 }
 
 void ImplicitStepCore::CalcResidual(const VectorXd& q, const VectorXd& v, const VectorXd& a,

@@ -29,7 +29,9 @@ class ImplicitStepCore {
   /// linear solver then analyses anew).
   bool BeginStep(double h, const State& state);
   /// Empty when a converged step to (q, v) may be accepted, else why not (self-contact search
-  /// margin exceeded, threads passed through each other, a probe sank too far into a target).
+  /// margin exceeded, threads passed through each other, a probe sank too far into a target;
+  /// the last only while half the step is still above the time loop's smallest step, so that a
+  /// probe too fast to resolve does not stop the run).
   std::string CheckStep(const VectorXd& q, const VectorXd& v) const;
   /// After a converged step: the contact history at the new state; the bodies' reference
   /// orientations rebased (R_ref ← R_ref exp(ψ̃), ψ ← 0), in the state and in ws().
@@ -71,6 +73,7 @@ class ImplicitStepCore {
   NewtonSolver newton_;
   NewtonSettings newton_settings_;
   double last_h_ = 0.0;
+  double smallest_step_;  // DynamicSettings::smallest_step()
   State previous_;
   VectorXd residual_full_;
 };

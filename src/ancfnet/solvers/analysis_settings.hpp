@@ -37,6 +37,9 @@ struct DynamicSettings {
   JacobianUpdate jacobian_update = JacobianUpdate::kAdaptive;
   NewtonSettings newton;
   ContactCouplingSettings contact_couplings;  ///< of the implicit integrators' iteration matrix
+
+  /// The smallest step the time loop cuts to: min_time_step, or time_step / 2¹⁰ when 0.
+  double smallest_step() const { return min_time_step > 0.0 ? min_time_step : time_step / 1024.0; }
 };
 
 /// When the static solver damps Newton steps (Deuflhard's natural monotonicity test).

@@ -29,7 +29,7 @@ SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings, dou
   if (!EmitOutput(output, *state, energy.account(), &result)) return result;
 
   const double nominal = settings.time_step;
-  const double min_step = settings.min_time_step > 0.0 ? settings.min_time_step : nominal / 1024.0;
+  const double min_step = settings.smallest_step();
   const double end = settings.end_time;
   const double time_eps = 1e-9 * nominal;
   double step = nominal;
