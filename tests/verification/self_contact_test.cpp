@@ -210,8 +210,9 @@ TEST(SelfContact, CoiledRopeFallingOnAPlanePilesUpWithoutCrossingItself) {
 }
 
 // The coiled rope's landing with the contact couplings pruned hard (dropped 5 steps after their
-// pair left the search) and kept for good with only the candidates coupled (the pattern of
-// before), both with full Newton: the patterns differ, the equations and the iterations do not,
+// pair was last coupled) and kept for good, both with full Newton: the patterns differ, the
+// equations and the iteration matrices do not (a pair gets its coupling blocks only while it
+// touches or nearly touches at the step start, whatever else the pattern holds),
 // so the positions agree to rounding, and the pruned pattern changes more often. (With the
 // adaptive Jacobian, a rebuild also forces a fresh Jacobian; the converged steps then differ
 // within the Newton tolerance, which the piling turns, with friction, amplify: 0.4 mm at 0.06 s.)
@@ -244,7 +245,7 @@ TEST(SelfContact, PruningTheContactCouplingsLeavesTheTrajectory) {
       a.statistics.pattern_rebuilds, b.statistics.pattern_rebuilds, a.statistics.steps,
       b.statistics.steps, a.statistics.newton_iterations, b.statistics.newton_iterations, fall,
       difference);
-  EXPECT_GT(fall, 0.005);  // it has landed
+  EXPECT_GT(fall, 0.005);       // it has landed
   EXPECT_LT(difference, 1e-9);  // m
   EXPECT_GT(a.statistics.pattern_rebuilds, b.statistics.pattern_rebuilds);
 }

@@ -10,9 +10,9 @@ namespace ancfnet {
 /// solver then has to order and factorise it anew; these settings trade a few more stored zeros
 /// for pattern rebuilds that are rare.
 struct ContactCouplingSettings {
-  /// Slack s ≥ 1: whenever the pattern is rebuilt, the self-contact pairs whose gap is below s
-  /// times the sum of their search margins are coupled too, so that a pair closing in is already
-  /// coupled when it becomes a candidate. 1: only the candidates (the default: a rebuild costs
+  /// Slack s ≥ 1: whenever the pattern is rebuilt, the self-contact candidates whose gap is
+  /// below s times their coupling gap g_c are coupled too, so that a pair closing in is already
+  /// coupled when it needs to be. 1: only the pairs with gap < g_c (the default: a rebuild costs
   /// less than the fill that slack adds to every factorisation, docs/benchmarks.md).
   double near_factor = 1.0;
   /// Pattern updates (attempted steps) a coupling is kept after its pair was last near; < 0

@@ -13,6 +13,9 @@ namespace {
 
 // Deepest overlap of a pair accepted at the end of a step, as a fraction of its mean radius.
 constexpr double kMaxPenetrationRatio = 0.5;
+// Gap below which a candidate pair is coupled in the iteration matrix, as a fraction of its radius
+// sum (docs/theory.md, "Self-contact": which pairs are coupled).
+constexpr double kCouplingGapRatio = 0.25;
 
 }  // namespace
 
@@ -59,6 +62,18 @@ int SelfContact::Blocks(const SelfContactPrimitive& p, double s, std::array<doub
     (*dof)[k] = element.dofs[3 * k];
   }
   return 4;
+}
+
+void SelfContact::AddOwnBlocks(const SelfContactPrimitive& p, const std::array<double, 4>& weight,
+                               const Matrix3d& k, SystemMatrix* matrix) const {
+  if (p.element < 0) {
+    matrix->AddPointMassBlock(p.point_mass, k);
+    return;
+  }
+  Matrix12d block;
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) block.block<3, 3>(3 * i, 3 * j) = weight[i] * weight[j] * k;
+  matrix->AddElementBlock(p.element, block);
 }
 
 SelfContact::PairState SelfContact::CalcPair(const Candidate& c, const VectorXd& q,
@@ -114,13 +129,13 @@ void SelfContact::FindCandidates(const State& state, double h) {
   for (std::size_t i = 0; i < n; ++i) {
     const Axis axis = Locate(primitives_[i], state.q, state.v);
     margin_[i] = 2.0 * h * std::max(axis.v0.norm(), axis.v1.norm()) + 0.5 * primitives_[i].radius;
-    boxes_[i] = Aabb::OfCapsule(axis.x0, axis.x1, primitives_[i].radius, near_factor_ * margin_[i]);
+    boxes_[i] = Aabb::OfCapsule(axis.x0, axis.x1, primitives_[i].radius, margin_[i]);
     start_x0_[i] = axis.x0;
     start_x1_[i] = axis.x1;
   }
   broad_phase_.FindOverlaps(boxes_, &overlaps_);
   candidates_.clear();
-  owners_.clear();
+  coupled_owners_.clear();
   near_owners_.clear();
   const double min_speed = model_.contact().normal.min_approach_speed;
   const auto& history = state.self_contact_history;
@@ -130,10 +145,9 @@ void SelfContact::FindCandidates(const State& state, double h) {
     c.a = a;
     c.b = b;
     const PairState pair = CalcPair(c, state.q, state.v, PairDetail::kGeometry);
-    if (pair.gap > near_factor_ * (margin_[a] + margin_[b])) continue;
-    near_owners_.emplace_back(primitives_[a].owner, primitives_[b].owner);
     if (pair.gap > margin_[a] + margin_[b]) continue;
     c.direction_start = pair.direction;
+    const double closing = std::max(-pair.direction.dot(pair.velocity), 0.0);
     const auto it = std::lower_bound(history.begin(), history.end(), c,
                                      [](const SelfContactPairHistory& h, const Candidate& k) {
                                        return h.first != k.a ? h.first < k.a : h.second < k.b;
@@ -143,11 +157,17 @@ void SelfContact::FindCandidates(const State& state, double h) {
     } else {
       // A pair new to the search: minus its closing speed now, or its impact speed when it
       // already touches.
-      const double closing = std::max(-pair.direction.dot(pair.velocity), 0.0);
       c.history.speed = pair.gap < 0.0 ? std::max(closing, min_speed) : -closing;
     }
+    // Coupled: touching or nearly (a fraction of the radius sum), or closing that gap within
+    // twice the step at the closing speed now.
+    const double coupling_gap =
+        kCouplingGapRatio * (primitives_[a].radius + primitives_[b].radius) + 2.0 * h * closing;
+    const std::pair<Index, Index> owners(primitives_[a].owner, primitives_[b].owner);
+    if (pair.gap < near_factor_ * coupling_gap) near_owners_.push_back(owners);
+    c.coupled = pair.gap < coupling_gap;
+    if (c.coupled) coupled_owners_.push_back(owners);
     candidates_.push_back(c);
-    owners_.emplace_back(primitives_[a].owner, primitives_[b].owner);
   }
 }
 
@@ -187,6 +207,13 @@ void SelfContact::AddJacobian(const VectorXd& q, const VectorXd& v, const Iterat
     const bool a_first = owner_a <= owner_b;
     const int coupling =
         matrix->FindContactCoupling(std::min(owner_a, owner_b), std::max(owner_a, owner_b));
+    if (!c.coupled || coupling < 0) {
+      // Apart at the step start (even where the pattern still holds their coupling, so that the
+      // matrix does not depend on the pattern's history): each primitive's own blocks only.
+      AddOwnBlocks(primitives_[c.a], wa, k, matrix);
+      AddOwnBlocks(primitives_[c.b], wb, k, matrix);
+      continue;
+    }
     const int offset_a = a_first ? 0 : nb, offset_b = a_first ? na : 0;
     for (int i = 0; i < na; ++i) {
       for (int j = 0; j < na; ++j)

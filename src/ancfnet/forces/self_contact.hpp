@@ -32,14 +32,16 @@ class SelfContact {
 
   /// At the state that starts a step of size h: the pairs, not excluded, whose gap is below the
   /// sum of their search margins m = 2 h max |ẋ| + r/2 (each end's speed, the primitive's
-  /// radius), with the history of each; and the near pairs, whose gap is below s times that
-  /// sum. h is also the step over which the LuGre law's bristles are advanced
+  /// radius), with the history of each. Among them, the coupled pairs, whose gap is below
+  /// g_c = (r_a + r_b)/4 + 2 h max(−u·(ẋ_a − ẋ_b), 0) (touching, nearly touching, or closing
+  /// that gap within the step), and the near pairs, whose gap is below s g_c (docs/theory.md,
+  /// "Self-contact"). h is also the step over which the LuGre law's bristles are advanced
   /// (TargetContact::SetStepSize; 0: the forces at the state, for outputs). Allocates only while
   /// its storage grows.
   void FindCandidates(const State& state, double h);
-  /// Owners (SystemMatrix::UpdateContactCouplings) of the candidate pairs.
-  const std::vector<std::pair<Index, Index>>& candidate_owners() const { return owners_; }
-  /// Owners of the near pairs (the candidates' among them): the couplings worth keeping.
+  /// Owners (SystemMatrix::UpdateContactCouplings) of the coupled pairs.
+  const std::vector<std::pair<Index, Index>>& coupled_owners() const { return coupled_owners_; }
+  /// Owners of the near pairs (the coupled ones among them): the couplings worth keeping.
   const std::vector<std::pair<Index, Index>>& near_owners() const { return near_owners_; }
   /// Number of candidate pairs.
   int num_candidates() const { return static_cast<int>(candidates_.size()); }
@@ -47,8 +49,11 @@ class SelfContact {
   /// ws.internal_force −= Qᵀ f, ws.viscous_force alike, ws.contact_energy += Σ ∫ F_el dδ over
   /// the touching candidate pairs at (q, v).
   void AddForces(const VectorXd& q, const VectorXd& v, Workspace& ws) const;
-  /// matrix += c_K ∂Q/∂q + c_C ∂Q/∂q̇, the closest-point parameters held fixed, into the contact
-  /// couplings of the candidates (candidate_owners() must have been added to `matrix`).
+  /// matrix += c_K ∂Q/∂q + c_C ∂Q/∂q̇ of the touching candidates, the closest-point parameters
+  /// held fixed: into the contact coupling of a coupled pair (coupled_owners() must have been
+  /// added to `matrix`), and for the others (or without the coupling) only the blocks of each
+  /// primitive with itself (a quasi-Newton matrix for a pair that was apart at the step start;
+  /// the residual stays exact).
   void AddJacobian(const VectorXd& q, const VectorXd& v, const IterationWeights& weights,
                    SystemMatrix* matrix) const;
   /// Empty when the step to q may be accepted; else why not: a primitive moved farther than its
@@ -78,6 +83,7 @@ class SelfContact {
     int a = 0, b = 0;                              // primitives, a < b
     ContactPairHistory history;                    // at the start of the step
     Vector3d direction_start = Vector3d::UnitZ();  // closest-point direction at the step start
+    bool coupled = false;                          // gap < g_c at the step start
   };
   // Axis ends of a primitive and their velocities.
   struct Axis {
@@ -104,6 +110,9 @@ class SelfContact {
   // and the blocks' first coordinates.
   int Blocks(const SelfContactPrimitive& p, double s, std::array<double, 4>* weight,
              std::array<Index, 4>* dof) const;
+  // matrix += Wᵀ k W on p's own blocks (element or point mass), W the blocks' weights.
+  void AddOwnBlocks(const SelfContactPrimitive& p, const std::array<double, 4>& weight,
+                    const Matrix3d& k, SystemMatrix* matrix) const;
 
   const Model& model_;
   std::vector<SelfContactPrimitive> primitives_;
@@ -115,7 +124,7 @@ class SelfContact {
   std::vector<Vector3d> start_x0_, start_x1_;
   std::vector<std::pair<int, int>> overlaps_;
   std::vector<Candidate> candidates_;
-  std::vector<std::pair<Index, Index>> owners_;
+  std::vector<std::pair<Index, Index>> coupled_owners_;
   double step_ = 0.0;  // h of FindCandidates
   std::vector<std::pair<Index, Index>> near_owners_;
   double near_factor_ = 1.0;

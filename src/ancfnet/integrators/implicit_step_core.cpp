@@ -54,7 +54,7 @@ bool ImplicitStepCore::BeginStep(double h, const State& state) {
   };
   if (!self_contact_.empty()) {
     self_contact_.FindCandidates(state, h);
-    append(self_contact_.candidate_owners(), &required_couplings_);
+    append(self_contact_.coupled_owners(), &required_couplings_);
     append(self_contact_.near_owners(), &near_couplings_);
   }
   if (!contact_.empty()) {

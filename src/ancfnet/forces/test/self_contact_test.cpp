@@ -111,7 +111,7 @@ void ExpectJacobiansMatchFiniteDifferences(const Model& model, bool check_stiffn
         IterationWeights{.mass = 0, .damping = 1, .stiffness = 0}}) {
     if (weights.stiffness != 0.0 && !check_stiffness) continue;
     SystemMatrix matrix(model, all);
-    matrix.AddContactCouplings(f.contact.candidate_owners());
+    matrix.AddContactCouplings(f.contact.coupled_owners());
     matrix.SetZero();
     f.contact.AddJacobian(f.state.q, f.state.v, weights, &matrix);
     const MatrixXd analytic = MatrixXd(matrix.matrix());
@@ -136,6 +136,71 @@ TEST(SelfContact, JacobiansMatchFiniteDifferences) {
   ExpectJacobiansMatchFiniteDifferences(
       MakeCrossingCables(MakeLuGreFriction(0.4, 0.3, 1e-2, 1e4, 50.0, 0.1), true), false, 1e-6,
       Vector3d(2e-5, -1e-5, 1e-5));
+}
+
+// Two parallel threads 0.3 (r_a + r_b) apart: candidates (the margins add up to (r_a + r_b)/2),
+// not coupled while at rest (g_c = (r_a + r_b)/4), coupled once the upper one comes down at
+// 0.2 m/s (g_c grows by 2 h · 0.2 m/s = 0.4 mm).
+TEST(SelfContact, CouplesOnlyThePairsThatTouchOrNearlyTouch) {
+  Material nylon{.youngs_modulus = 3e9, .density = 1140};
+  const CableProperties p = MakeCableProperties(nylon, MakeCircleSection(2 * kRadius));
+  const double gap = 0.3 * 2 * kRadius;
+  ModelBuilder builder;
+  builder.AddCable({.name = "a",
+                    .start = Vector3d(0, 0, 0),
+                    .end = Vector3d(0.1, 0, 0),
+                    .num_elements = 2,
+                    .properties = p});
+  builder.AddCable({.name = "b",
+                    .start = Vector3d(0, 0, 2 * kRadius + gap),
+                    .end = Vector3d(0.1, 0, 2 * kRadius + gap),
+                    .num_elements = 2,
+                    .properties = p});
+  ContactSpec spec;
+  spec.normal = MakeHertzContactLaw(1e7);
+  spec.self_contact = true;
+  spec.capsules_per_element = 3;
+  builder.SetContact(spec);
+  const Model model = builder.Build();
+  SelfContact contact(model);
+  State state = MakeInitialState(model);
+  contact.FindCandidates(state, 1e-3);
+  EXPECT_GT(contact.num_candidates(), 0);
+  EXPECT_TRUE(contact.coupled_owners().empty());
+  EXPECT_TRUE(contact.near_owners().empty());
+  for (Index node = 0; node < model.num_nodes(); ++node) {
+    const Index dof = model.NodePositionDof(node);
+    if (state.q[dof + 2] > kRadius) state.v[dof + 2] = -0.2;
+  }
+  contact.FindCandidates(state, 1e-3);
+  EXPECT_FALSE(contact.coupled_owners().empty());
+  EXPECT_EQ(contact.near_owners(), contact.coupled_owners());
+  for (const auto& [a, b] : contact.coupled_owners()) EXPECT_NE(a < 2, b < 2);  // a's with b's
+}
+
+// Without its contact coupling a touching pair adds only each primitive's blocks with itself:
+// the full Jacobian on the entries of the uncoupled pattern (the owners' own groups; a and b and
+// the bead share no element), nothing elsewhere.
+TEST(SelfContact, PairWithoutCouplingAddsOnlyItsOwnBlocks) {
+  const Model model = MakeCrossingCables(MakeTanhFriction(0.4, 0.3, 1e-2, 1e-1), true);
+  const Fixture f(model);
+  const DofMap all = DofMap::AllCoordinates(model);
+  const IterationWeights weights{.mass = 0, .damping = 0.7, .stiffness = 1};
+  SystemMatrix coupled(model, all), uncoupled(model, all);
+  coupled.AddContactCouplings(f.contact.coupled_owners());
+  coupled.SetZero();
+  uncoupled.SetZero();
+  f.contact.AddJacobian(f.state.q, f.state.v, weights, &coupled);
+  f.contact.AddJacobian(f.state.q, f.state.v, weights, &uncoupled);
+  const MatrixXd full = MatrixXd(coupled.matrix());
+  MatrixXd own = MatrixXd::Zero(full.rows(), full.cols());
+  const SparseMatrixd& pattern = uncoupled.matrix();
+  for (int j = 0; j < pattern.outerSize(); ++j)
+    for (SparseMatrixd::InnerIterator it(pattern, j); it; ++it)
+      own(it.row(), it.col()) = full(it.row(), it.col());
+  ASSERT_GT(own.norm(), 0.0);
+  EXPECT_LT((MatrixXd(uncoupled.matrix()) - own).norm(), 1e-12 * own.norm());
+  EXPECT_GT((full - own).norm(), 0.1 * own.norm());  // the blocks between the owners left out
 }
 
 TEST(SelfContactFilter, LeavesOutNeighboursOnAThreadAndAtAKnot) {
