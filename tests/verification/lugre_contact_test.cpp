@@ -21,6 +21,7 @@
 #include "ancfnet/forces/target_contact.hpp"
 #include "ancfnet/model/model_builder.hpp"
 #include "ancfnet/solvers/dynamic_solver.hpp"
+#include "verification_scenes.hpp"
 
 namespace ancfnet {
 namespace {
@@ -40,14 +41,7 @@ double PreSliding(double load_ratio) { return -(kMuS / kSigma0) * std::log(1.0 -
 
 ContactSpec PlaneContact(const Vector3d& normal, const NormalLaw& law,
                          const FrictionLaw& friction) {
-  ContactSpec spec;
-  spec.normal = law;
-  spec.friction = friction;
-  ContactTarget plane;
-  plane.name = "ground";
-  plane.normal = normal;
-  spec.targets.push_back(plane);
-  return spec;
+  return verification::MakePlaneContact(law, normal, friction);
 }
 
 struct Slide {

@@ -13,6 +13,7 @@
 
 #include "ancfnet/model/model_builder.hpp"
 #include "ancfnet/solvers/dynamic_solver.hpp"
+#include "verification_scenes.hpp"
 
 namespace ancfnet {
 namespace {
@@ -20,14 +21,7 @@ namespace {
 constexpr double kMass = 0.1, kRadius = 0.01, kSpeed = 1.0;
 
 ContactSpec PlaneContact(const NormalLaw& law, const Vector3d& normal = Vector3d::UnitZ()) {
-  ContactSpec spec;
-  spec.normal = law;
-  spec.point_mass_radius = kRadius;
-  ContactTarget plane;
-  plane.name = "ground";
-  plane.normal = normal;
-  spec.targets.push_back(plane);
-  return spec;
+  return verification::MakePlaneContact(law, normal, std::nullopt, kRadius);
 }
 
 struct Impact {

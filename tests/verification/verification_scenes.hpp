@@ -1,6 +1,8 @@
 #pragma once
 /// @file Models shared by the verification cases, built through the public API.
 
+#include <optional>
+
 #include "ancfnet/model/model_builder.hpp"
 
 namespace ancfnet::verification {
@@ -24,6 +26,22 @@ inline ModelBuilder MakeCantilever(int elements, int axial_gauss_points = 3,
 }
 
 inline double CantileverBendingStiffness() { return 2.0e11 * 1e-8 / 12.0; }
+
+/// Contact with one target, the plane through the origin with outward `normal` named "ground":
+/// the normal law, the friction law (none: frictionless) and the point masses' radius.
+inline ContactSpec MakePlaneContact(const NormalLaw& law, const Vector3d& normal,
+                                    const std::optional<FrictionLaw>& friction = std::nullopt,
+                                    double point_mass_radius = 0.0) {
+  ContactSpec spec;
+  spec.normal = law;
+  spec.friction = friction;
+  spec.point_mass_radius = point_mass_radius;
+  ContactTarget plane;
+  plane.name = "ground";
+  plane.normal = normal;
+  spec.targets.push_back(plane);
+  return spec;
+}
 
 }  // namespace ancfnet::verification
 

@@ -111,9 +111,10 @@ void ModelBuilder::SetContact(const ContactSpec& contact) {
       case ContactTarget::Kind::kCylinder:
       case ContactTarget::Kind::kCapsule:
         if (std::abs(t.normal.norm() - 1.0) > 1e-6)
-          throw InputError(fmt::format("contact target '{}': its normal or axis must be a unit "
-                                       "vector",
-                                       t.name));
+          throw InputError(
+              fmt::format("contact target '{}': its normal or axis must be a unit "
+                          "vector",
+                          t.name));
         if (t.kind == ContactTarget::Kind::kCylinder) {
           RequirePositive(t.radius, "cylinder radius");
           RequirePositive(t.half_length, "cylinder half length");
@@ -142,9 +143,10 @@ void ModelBuilder::SetContact(const ContactSpec& contact) {
     if (!t.body_name.empty()) {
       t.body = model_.FindRigidBody(t.body_name);
       if (t.body < 0)
-        throw InputError(fmt::format("contact target '{}': no rigid body named '{}' (bodies must "
-                                     "be defined before the contact)",
-                                     t.name, t.body_name));
+        throw InputError(
+            fmt::format("contact target '{}': no rigid body named '{}' (bodies must "
+                        "be defined before the contact)",
+                        t.name, t.body_name));
     }
   for (ContactTarget& t : model_.contact_.targets)
     if (t.kind == ContactTarget::Kind::kPlane || t.kind == ContactTarget::Kind::kCylinder ||
