@@ -18,6 +18,7 @@
 #include "ancfnet/forces/target_contact.hpp"
 #include "ancfnet/model/model_builder.hpp"
 #include "ancfnet/solvers/dynamic_solver.hpp"
+#include "verification_scenes.hpp"
 
 namespace ancfnet {
 namespace {
@@ -102,15 +103,9 @@ TEST(MeshContact, RopeDroppedOnAMeshBoxRestsOnIt) {
   spec.targets.push_back(MeshBox());
   builder.SetContact(spec);
   const Model model = builder.Build();
-  DynamicSettings settings;
-  settings.time_step = 1e-4;
-  settings.end_time = 0.3;
-  State state = MakeInitialState(model);
-  const SolveResult result = SolveDynamic(
-      model, settings, 0.0, [](const State&, const EnergyAccount&) {}, &state);
-  ASSERT_TRUE(result.completed) << result.message;
-  const TargetContact contact(model);
-  const TargetContact::Summary s = contact.Summarize(state.q, state.v, state.contact_history);
+  const State state = verification::RunToEnd(model, 1e-4, 0.3);
+  const TargetContact::Summary s =
+      TargetContact(model).Summarize(state.q, state.v, state.contact_history);
   const double length = std::hypot(0.15, 0.02);
   const double weight = p.mass_per_length * length * kGravity;
   std::printf(

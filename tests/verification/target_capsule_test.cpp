@@ -18,6 +18,7 @@
 #include "ancfnet/forces/target_contact.hpp"
 #include "ancfnet/model/model_builder.hpp"
 #include "ancfnet/solvers/dynamic_solver.hpp"
+#include "verification_scenes.hpp"
 
 namespace ancfnet {
 namespace {
@@ -59,17 +60,6 @@ ContactSpec MakeContact(ContactSpec::TargetGeometry geometry, const ContactTarge
   return spec;
 }
 
-State Settle(const Model& model) {
-  DynamicSettings settings;
-  settings.time_step = 1e-3;
-  settings.end_time = 1.0;
-  State state = MakeInitialState(model);
-  const SolveResult result = SolveDynamic(
-      model, settings, 0.0, [](const State&, const EnergyAccount&) {}, &state);
-  EXPECT_TRUE(result.completed) << result.message;
-  return state;
-}
-
 // Position of the material point at arc fraction s of the single cable.
 Vector3d PointAt(const Model& model, const VectorXd& q, double s) {
   const Index elements = static_cast<Index>(model.elements().size());
@@ -94,7 +84,7 @@ Rest ThreadOverARod(ContactSpec::TargetGeometry geometry) {
   builder.AddPin({"thread", 1.0});
   builder.SetContact(MakeContact(geometry, Rod(kRodX, kRodTop - kRodRadius, kRodRadius)));
   const Model model = builder.Build();
-  const State state = Settle(model);
+  const State state = verification::RunToEnd(model, 1e-3, 1.0);
   Rest rest;
   rest.z_at_rod = PointAt(model, state.q, kRodX).z();
   rest.lowest = 0.0;
@@ -136,7 +126,7 @@ TEST(TargetCapsuleContact, CylinderCarriesTheWeightOfAThreadWithSlidingEnds) {
   spec.capsules_per_element = 5;  // the top of the cylinder inside a capsule
   builder.SetContact(spec);
   const Model model = builder.Build();
-  const State state = Settle(model);
+  const State state = verification::RunToEnd(model, 1e-3, 1.0);
   std::vector<ContactPoint> records;
   TargetContact(model).CollectContacts(state.q, state.v, state.contact_history, &records);
   double lift = 0.0;

@@ -211,15 +211,9 @@ TEST(TargetContact, RopeDroppedOnAPlaneRestsOnIt) {
   spec.friction = MakeTanhFriction(0.3, 0.3, 1e-3, 1e-2);
   builder.SetContact(spec);
   const Model model = builder.Build();
-  DynamicSettings settings;
-  settings.time_step = 1e-4;
-  settings.end_time = 0.3;
-  State state = MakeInitialState(model);
-  const SolveResult result = SolveDynamic(
-      model, settings, 0.0, [](const State&, const EnergyAccount&) {}, &state);
-  ASSERT_TRUE(result.completed) << result.message;
-  const TargetContact contact(model);
-  const TargetContact::Summary s = contact.Summarize(state.q, state.v, state.contact_history);
+  const State state = verification::RunToEnd(model, 1e-4, 0.3);
+  const TargetContact::Summary s =
+      TargetContact(model).Summarize(state.q, state.v, state.contact_history);
   std::printf("rope on a plane: %d touching spheres, N = %.5f N (weight %.5f N), deepest %.2e m\n",
               s.active, s.normal_force, p.mass_per_length * 9.81, s.max_penetration);
   EXPECT_GT(s.active, 100);

@@ -1,9 +1,12 @@
 #pragma once
 /// @file Models shared by the verification cases, built through the public API.
 
+#include <gtest/gtest.h>
+
 #include <optional>
 
 #include "ancfnet/model/model_builder.hpp"
+#include "ancfnet/solvers/dynamic_solver.hpp"
 
 namespace ancfnet::verification {
 
@@ -41,6 +44,20 @@ inline ContactSpec MakePlaneContact(const NormalLaw& law, const Vector3d& normal
   plane.normal = normal;
   spec.targets.push_back(plane);
   return spec;
+}
+
+/// The state after a generalised-α run (default settings otherwise) from the initial state to
+/// `end_time` with nominal step `time_step`, no outputs; a run that does not complete fails the
+/// test.
+inline State RunToEnd(const Model& model, double time_step, double end_time) {
+  DynamicSettings settings;
+  settings.time_step = time_step;
+  settings.end_time = end_time;
+  State state = MakeInitialState(model);
+  const SolveResult result = SolveDynamic(
+      model, settings, 0.0, [](const State&, const EnergyAccount&) {}, &state);
+  EXPECT_TRUE(result.completed) << result.message;
+  return state;
 }
 
 }  // namespace ancfnet::verification
