@@ -33,7 +33,7 @@ EnergyTracker::EnergyTracker(const Model& model, const Workspace& ws, const Stat
       load_factor_(load_factor),
       quadrature_(quadrature),
       v_(state.v),
-      power_(state.v.dot(ws.viscous_force)) {
+      viscous_(ws.viscous_force) {
   for (const RigidBody& body : model.rigid_bodies())
     if (body.motion == BodyMotion::kFree)
       for (int k = 0; k < 3; ++k) rebased_.push_back(body.rotation_dof() + k);
@@ -55,16 +55,13 @@ void EnergyTracker::Advance(const Model& model, const Workspace& ws, const State
   double dissipated = 0.0;
   const auto add = [&](Index i, double dq) {
     work += (w_then * applied_[i] + w_now * ws.applied_force[i]) * dq;
-    if (midpoint) dissipated += ws.viscous_force[i] * dq;
+    dissipated += (w_then * viscous_[i] + w_now * ws.viscous_force[i]) * dq;
   };
   for (Index i = 0; i < q.size(); ++i) add(i, q[i] - q_[i]);
   // A free body's ψ is back at 0 after the rebase: its increment is h (ω_n + ω_{n+1})/2 (exact for
   // the midpoint rule, whose ψ_{n+1} = h ω_{n+½}).
   const double h = state.t - t_;
   for (Index i : rebased_) add(i, 0.5 * h * (v_[i] + state.v[i]) - (q[i] - q_[i]));
-  const double power = state.v.dot(ws.viscous_force);
-  if (quadrature_ == EnergyQuadrature::kTrapezoidal)
-    dissipated = 0.5 * (state.t - t_) * (power_ + power);
   // A growing gravity load (static load stepping) changes V = −λ Q_gᵀq also through λ; that part,
   // −∫ Q_gᵀq dλ, is work put in by raising the load, so the balance stays constant.
   const double gravity_then = ws.gravity_force.dot(q_);
@@ -79,16 +76,16 @@ void EnergyTracker::Advance(const Model& model, const Workspace& ws, const State
   t_ = state.t;
   q_ = q;
   v_ = state.v;
-  power_ = power;
   load_factor_ = load_factor;
   applied_ = ws.applied_force;
+  viscous_ = ws.viscous_force;
 }
 
 void EnergyTracker::Release(const Model& model, const Workspace& ws, double released) {
   account_.dissipated += released;
   account_.strain = CalcStrainEnergy(model, ws, q_);
   applied_ = ws.applied_force;
-  power_ = v_.dot(ws.viscous_force);
+  viscous_ = ws.viscous_force;
 }
 
 }  // namespace ancfnet

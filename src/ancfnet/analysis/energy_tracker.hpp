@@ -20,9 +20,10 @@ double CalcStrainEnergy(const Model& model, const Workspace& ws, const VectorXd&
 enum class EnergyQuadrature {
   /// Statics: W with the trapezoidal rule in q along the load path; nothing moves, D = 0.
   kLoadPath,
-  /// W with the trapezoidal rule in q; D with the trapezoidal rule in time of the dissipated
-  /// power P = q̇ᵀ Q_visc ≥ 0 at the two ends of the step: never negative (it overestimates D
-  /// where the step does not resolve a damped vibration).
+  /// W and D = ∫ Q_visc · dq with the trapezoidal rule in q, the quadrature that gives the
+  /// change of the strain energy for the elastic forces: a snap shorter than the step is
+  /// dissipated as the integrator's path dissipates it (the rule in time of the power q̇ᵀ Q_visc,
+  /// used before, counted up to twice the energy lost at such snaps).
   kTrapezoidal,
   /// The implicit midpoint rule: W and D with the forces it left in the workspace at
   /// (q_{n+½}, v_{n+½}) = (q̄, v̄); the discrete kinetic-energy balance is then exact.
@@ -55,7 +56,7 @@ class EnergyTracker {
   double load_factor_ = 1.0;
   EnergyQuadrature quadrature_;
   VectorXd v_;
-  double power_ = 0.0;  // q̇ᵀ Q_visc at the last state (kTrapezoidal)
+  VectorXd viscous_;            // Q_visc at the last state
   std::vector<Index> rebased_;  // rotation coordinates of free bodies (ψ reset to 0 every step)
 };
 

@@ -6,24 +6,13 @@
 
 #include "ancfnet/common/quadrature.hpp"
 #include "ancfnet/elements/hermite_shape.hpp"
+#include "ancfnet/elements/rope_law.hpp"
 
 namespace ancfnet {
 namespace {
 
 using Matrix34d = Eigen::Matrix<double, 3, 4>;
 using Matrix12x3d = Eigen::Matrix<double, 12, 3>;
-
-// φ(ε) = (ε + √(ε² + s²))/2 and its first two derivatives.
-struct SmoothMax {
-  double value = 0.0;
-  double slope = 0.0;
-  double curvature = 0.0;
-};
-
-SmoothMax CalcSmoothMax(double x, double s) {
-  const double r = std::sqrt(x * x + s * s);
-  return {0.5 * (x + r), 0.5 * (1.0 + x / r), 0.5 * s * s / (r * r * r)};
-}
 
 // κ_ε L_e: curvature (times element length) around which bending damping passes from the rate of
 // the curvature vector (near straight) to the rate of its magnitude (bent). A bent element in
@@ -59,17 +48,17 @@ Matrix12x3d StackBlocks(const Vector4d& u, const Matrix3d& x, const Vector4d& v,
   return m;
 }
 
-// The smooth rope law at one Gauss point: N = EA φ(ε) + EA τ φ'(ε) ε̇ with the smooth maximum
-// φ = (ε + √(ε² + ε_s²))/2, so that Newton sees no kink where a thread goes slack. de = ∂ε/∂e,
+// The smooth rope law at one Gauss point: N = EA φ(ε) + EA τ φ'(ε) ε̇ with φ of
+// elements/rope_law.hpp, so that Newton sees no kink where a thread goes slack. de = ∂ε/∂e,
 // de_dot = ∂ε̇/∂e.
 void AddSmoothRopeTerms(const CableElementParameters& p, double strain, double strain_rate,
                         const Vector12d& de, const Vector12d& de_dot, const Vector4d& ds,
                         double weight, const CableForceOutputs& out) {
-  const SmoothMax phi = CalcSmoothMax(strain, p.rope_smoothing_strain);
+  const RopeLawValue phi = CalcSmoothRopeLaw(strain, p.rope_smoothing_strain);
   const double ea = p.axial_stiffness;
   const double ea_tau = ea * p.axial_damping_time;
   const double viscous_n = ea_tau * phi.slope * strain_rate;
-  const double n = ea * phi.value + viscous_n;
+  const double n = ea * phi.force + viscous_n;
   if (out.force) *out.force += (weight * n) * de;
   if (out.viscous_force) *out.viscous_force += (weight * viscous_n) * de;
   if (out.stiffness) {
@@ -98,7 +87,13 @@ void AddAxialTerms(const CableElementParameters& p, const Matrix34d& e, const Ma
     return AddSmoothRopeTerms(p, strain, strain_rate, DistributeForce(ds, a),
                               DistributeForce(ds, a_dot), ds, weight, out);
   // A rope carries no axial force while slack, and never pushes: N = max(EA (ε + τ ε̇), 0).
-  if (p.tension_only && (strain <= 0.0 || n <= 0.0)) return;
+  if (p.tension_only && strain <= 0.0) return;
+  if (p.tension_only && n <= 0.0) {
+    // Stretched but shortening faster than ε/τ: the dashpot takes up the whole elastic force, so
+    // N = 0 is EA ε (elastic, stored in U) plus −EA ε (viscous, dissipated).
+    if (out.viscous_force) *out.viscous_force -= (weight * ea * strain) * DistributeForce(ds, a);
+    return;
+  }
   const Vector12d de = DistributeForce(ds, a);
   if (out.force) *out.force += (weight * n) * de;
   if (out.viscous_force) *out.viscous_force += (weight * viscous_n) * de;
@@ -252,7 +247,7 @@ CableStrain CalcCableStrain(const CableElementParameters& p, const Vector12d& e,
 double CalcCableAxialForce(const CableElementParameters& p, double strain) {
   if (!p.tension_only) return p.axial_stiffness * strain;
   if (p.rope_smoothing_strain > 0.0)
-    return p.axial_stiffness * CalcSmoothMax(strain, p.rope_smoothing_strain).value;
+    return p.axial_stiffness * CalcSmoothRopeLaw(strain, p.rope_smoothing_strain).force;
   return p.axial_stiffness * std::max(strain, 0.0);
 }
 
@@ -272,10 +267,7 @@ double CalcCableStrainEnergy(const CableElementParameters& p, const Vector12d& e
     const double eps = CalcCableStrain(p, e, axial.points[i]).axial;
     double density = 0.5 * eps * eps;  // ∫ N dε / EA
     if (p.tension_only && p.rope_smoothing_strain > 0.0) {
-      // ∫₀^ε φ = ¼ [ε² + ε r + s² ln((ε + r)/s)], r = √(ε² + s²).
-      const double s2 = p.rope_smoothing_strain * p.rope_smoothing_strain;
-      const double r = std::sqrt(eps * eps + s2);
-      density = 0.25 * (eps * eps + eps * r + s2 * std::log((eps + r) / p.rope_smoothing_strain));
+      density = CalcSmoothRopeLaw(eps, p.rope_smoothing_strain).energy;
     } else if (p.tension_only) {
       density = 0.5 * std::max(eps, 0.0) * std::max(eps, 0.0);
     }

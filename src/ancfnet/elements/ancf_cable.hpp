@@ -31,9 +31,9 @@ struct CableElementParameters {
   double bending_damping_time = 0.0;
   /// Rope law: N = EA max(ε + τ_ε ε̇, 0) while stretched, 0 while slack. Bending still acts.
   bool tension_only = false;
-  /// ε_s ≥ 0: with tension_only, the smooth rope law N = EA (ε + √(ε² + ε_s²))/2 (plus damping
-  /// scaled alike), which differs from EA max(ε, 0) by at most EA ε_s/2 (at ε = 0) but has no
-  /// kink, so Newton converges where threads go slack and taut. 0: the exact maximum.
+  /// ε_s ≥ 0: with tension_only, the smooth rope law N = EA φ(ε) (plus damping EA τ φ′ ε̇) of
+  /// elements/rope_law.hpp: exact for |ε| ≥ ε_s, zero below −ε_s, a quadratic between (EA ε_s/4
+  /// at ε = 0), no kink, so Newton converges where threads go slack and taut. 0: the exact max.
   double rope_smoothing_strain = 0.0;
   BendingModel bending_model = BendingModel::kExactCurvature;
   /// Gauss points along the element for the axial and the bending terms (docs/theory.md says why
@@ -75,7 +75,7 @@ struct CableStrain {
 CableStrain CalcCableStrain(const CableElementParameters& p, const Vector12d& e, double xi);
 
 /// Elastic axial force (N) for an axial strain ε: EA ε; for ropes EA max(ε, 0), or with the
-/// smooth rope law EA φ(ε), φ = (ε + √(ε² + ε_s²))/2 (docs/theory.md, "Tension-only law").
+/// smooth rope law EA φ(ε) of elements/rope_law.hpp (docs/theory.md, "Smooth rope law").
 double CalcCableAxialForce(const CableElementParameters& p, double strain);
 
 /// Largest elastic axial force (N) over the element's axial Gauss points, where the element's

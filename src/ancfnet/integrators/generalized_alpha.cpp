@@ -1,5 +1,7 @@
 #include "ancfnet/integrators/generalized_alpha.hpp"
 
+#include <cmath>
+
 namespace ancfnet {
 
 GeneralizedAlphaCoefficients GeneralizedAlphaCoefficients::FromSpectralRadius(double rho) {
@@ -75,6 +77,10 @@ class GeneralizedAlphaIntegrator::StepProblem {
   double IncrementNorm(const VectorXd& da) const {
     return core_.IncrementNorm(da, state_.q, beta_prime_);
   }
+  double IncrementEnergy(const VectorXd& da, const VectorXd& r) const {
+    return beta_prime_ * std::abs(da.dot(r));
+  }
+  double EnergyScale() const { return core_.EnergyScale(state_.q, state_.v); }
 
  private:
   GeneralizedAlphaIntegrator& owner_;

@@ -1,5 +1,7 @@
 #include "ancfnet/integrators/implicit_midpoint.hpp"
 
+#include <cmath>
+
 namespace ancfnet {
 
 // The unknown is the mean acceleration a = (v_{n+1} − v_n)/h, so that
@@ -51,6 +53,11 @@ class ImplicitMidpointIntegrator::StepProblem {
   double IncrementNorm(const VectorXd& da) const {
     return core_.IncrementNorm(da, mid_.q, 0.5 * h_ * h_);
   }
+  // The residual is taken at the midpoint, which moves by (h²/4) Δa.
+  double IncrementEnergy(const VectorXd& da, const VectorXd& r) const {
+    return 0.25 * h_ * h_ * std::abs(da.dot(r));
+  }
+  double EnergyScale() const { return core_.EnergyScale(mid_.q, mid_.v); }
 
  private:
   ImplicitStepCore& core_;

@@ -1,5 +1,7 @@
 #include "ancfnet/integrators/implicit_step_core.hpp"
 
+#include <cmath>
+
 #include "ancfnet/integrators/initial_acceleration.hpp"
 #include "ancfnet/model/rigid_body_kinematics.hpp"
 
@@ -112,6 +114,21 @@ void ImplicitStepCore::AcceptStep(State* state) {
     self_contact_.UpdateHistory(state->q, state->v, &state->self_contact_history);
   RebaseBodyRotations(model_, state);
   ws_.body_rotation = state->body_rotation;
+}
+
+double ImplicitStepCore::EnergyScale(const VectorXd& q, const VectorXd& v) const {
+  double kinetic = 0.0;
+  for (Index k = 0; k < mass_.outerSize(); ++k)
+    for (SparseMatrixd::InnerIterator it(mass_, k); it; ++it)
+      kinetic += 0.5 * v[it.row()] * it.value() * v[it.col()];
+  double internal = 0.0;
+  double external = 0.0;
+  for (Index i = 0; i < q.size(); ++i) {
+    const double dq = q[i] - previous_.q[i];
+    internal += dq * ws_.internal_force[i];
+    external += dq * ws_.external_force[i];
+  }
+  return kinetic + std::abs(internal) + std::abs(external);
 }
 
 double ImplicitStepCore::IncrementNorm(const VectorXd& da, const VectorXd& q, double scale) const {

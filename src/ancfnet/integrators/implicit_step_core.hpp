@@ -52,6 +52,10 @@ class ImplicitStepCore {
   void CalcForces(const VectorXd& q, const VectorXd& v);
   /// Weighted RMS norm of the position change scale · Δa against positions q.
   double IncrementNorm(const VectorXd& da, const VectorXd& q, double scale) const;
+  /// The energy a step from the saved state to (q, v) exchanges, the scale of Newton's energy
+  /// test (NewtonSettings): ½ vᵀ M v + |Δqᵀ Q_int| + |Δqᵀ Q_ext| with Δq = q − q_n and the
+  /// forces of the last CalcResidual (J).
+  double EnergyScale(const VectorXd& q, const VectorXd& v) const;
 
   const DofMap& dofs() const { return dofs_; }
   const Model& model() const { return model_; }

@@ -12,6 +12,7 @@ void ReadNewtonSettings(const YamlMap& map, NewtonSettings* newton) {
   if (auto v = map.Find("max_iterations")) newton->max_iterations = v->AsInt(1);
   if (auto v = map.Find("relative_tolerance")) newton->relative_tolerance = v->AsPositive();
   if (auto v = map.Find("absolute_tolerance")) newton->absolute_tolerance = v->AsPositive();
+  if (auto v = map.Find("energy_tolerance")) newton->energy_tolerance = v->AsPositive();
 }
 
 void ReadStaticSettings(const YamlMap& map, StaticSettings* statics) {
@@ -65,7 +66,7 @@ AnalysisSettings ReadAnalysisSettings(const YamlValue& analysis) {
   map.CheckKeys({"type", "load_steps", "max_step_cuts", "line_search", "integrator",
                  "spectral_radius", "time_step", "end_time", "min_time_step", "jacobian_update",
                  "max_iterations", "relative_tolerance", "absolute_tolerance",
-                 "contact_couplings"});
+                 "energy_tolerance", "contact_couplings"});
   AnalysisSettings settings;
   settings.type = map.Get("type").AsEnum<AnalysisType>(
       {{"static", AnalysisType::kStatic}, {"dynamic", AnalysisType::kDynamic}});

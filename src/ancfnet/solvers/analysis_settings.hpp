@@ -7,11 +7,17 @@
 namespace ancfnet {
 
 /// Convergence of Newton iterations: converged when the weighted RMS norm of the last increment,
-/// √(mean_i (Δx_i / (atol + rtol |x_i|))²), is ≤ 1 (the error norm of Hairer & Wanner 1996, II.4).
+/// √(mean_i (Δx_i / (atol + rtol |x_i|))²), is ≤ 1 (the error norm of Hairer & Wanner 1996, II.4)
+/// and the energy of the last correction |Δqᵀ R| (J: the work of the residual force R over the
+/// position increment Δq, twice the strain energy left in the stiffest modes) is ≤ energy_tolerance
+/// times the energy the step exchanges (kinetic energy plus |work| of internal and applied forces
+/// over the step): docs/theory.md, "Convergence of Newton's method". The second test keeps stiff
+/// systems honest, where a position increment below rtol still leaves large forces.
 struct NewtonSettings {
   int max_iterations = 12;
   double relative_tolerance = 1e-6;  ///< rtol (dimensionless)
   double absolute_tolerance = 1e-8;  ///< atol (in the unit of the coordinates, m or 1)
+  double energy_tolerance = 1e-6;    ///< η_E (dimensionless)
 };
 
 /// When the iteration matrix is recomputed and factorised.

@@ -18,6 +18,9 @@ namespace ancfnet {
 ///   const SparseMatrixd& CalcIterationMatrix();    ∂R/∂x at the current iterate
 ///   void ApplyIncrement(const VectorXd& dx, double scale);   x += scale · dx
 ///   double IncrementNorm(const VectorXd& dx) const;   weighted RMS norm (≤ 1: converged)
+///   double IncrementEnergy(const VectorXd& dx, const VectorXd& r) const;  |Δqᵀ R| (J) of the
+///                                                  position increment Δq that dx gives
+///   double EnergyScale() const;                    energy the step exchanges (J), ≥ 0
 struct NewtonResult {
   bool converged = false;
   int iterations = 0;

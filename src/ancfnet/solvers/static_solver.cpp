@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include <cmath>
+
 #include "ancfnet/analysis/energy_tracker.hpp"
 #include "ancfnet/assembly/forces.hpp"
 #include "ancfnet/common/error.hpp"
@@ -44,6 +46,15 @@ class LoadIncrement {
   double IncrementNorm(const VectorXd& dx) const {
     return WeightedRmsNorm(dx, state_.q, dofs_.coordinates(), 1.0, newton_.relative_tolerance,
                            newton_.absolute_tolerance);
+  }
+  double IncrementEnergy(const VectorXd& dx, const VectorXd& r) const {
+    return std::abs(dx.dot(r));
+  }
+  // The work of the internal and applied forces over the increment so far (forces of the last
+  // CalcResidual).
+  double EnergyScale() const {
+    return std::abs((state_.q - q_start_).dot(ws_.internal_force)) +
+           std::abs((state_.q - q_start_).dot(ws_.external_force));
   }
 
  private:

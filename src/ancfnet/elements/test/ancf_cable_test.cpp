@@ -304,3 +304,35 @@ TEST(AncfCable, AxialForceIsTheDerivativeOfTheEnergyForEveryLaw) {
 
 }  // namespace
 }  // namespace ancfnet
+
+namespace ancfnet {
+namespace {
+
+// A stretched rope shortening faster than ε/τ carries no force: N = max(EA (ε + τ ε̇), 0) = 0.
+// Its elastic part, the gradient of the strain energy that is accounted, must then be cancelled
+// by the viscous part, so that Q − Q_visc = ∂U/∂e and the energy the dashpot takes is counted
+// as dissipated (before issue 17 Q_visc was 0 there and the account lost EA ε ε̇ per unit length).
+TEST(AncfCable, SlackeningRopeKeepsItsElasticForceInTheEnergyAccount) {
+  CableElementParameters p = MakeParameters();
+  p.tension_only = true;
+  p.bending_stiffness = 0.0;
+  p.axial_damping_time = 0.01;
+  const Vector3d dir = Vector3d::UnitX();
+  const Vector12d e = StraightElement(Vector3d::Zero(), dir, p.length, 1.001);
+  Vector12d v = Vector12d::Zero();
+  v.segment<3>(6) = -1.0 * dir;  // the far end comes back at 1 m/s: ε̇ ≈ −1/L ≪ −ε/τ
+  Vector12d force, viscous;
+  CalcCableInternalForce(p, e, v, {.force = &force, .viscous_force = &viscous});
+  EXPECT_EQ(force.norm(), 0.0);
+  for (int i = 0; i < 12; ++i) {
+    Vector12d ep = e, em = e;
+    ep[i] += 1e-7;
+    em[i] -= 1e-7;
+    const double gradient = (CalcCableStrainEnergy(p, ep) - CalcCableStrainEnergy(p, em)) / 2e-7;
+    EXPECT_NEAR(force[i] - viscous[i], gradient, 1e-6 * p.axial_stiffness) << "coordinate " << i;
+  }
+  EXPECT_GT(viscous.norm(), 1e-4 * p.axial_stiffness);  // the elastic force it cancels
+}
+
+}  // namespace
+}  // namespace ancfnet
