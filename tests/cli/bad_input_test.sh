@@ -146,6 +146,13 @@ done
 expect_input_error run "$scene" -o "$work/a_file/out" -q
 [[ $message == *"a_file"* ]] || fail "the message does not name the output directory: $message"
 
+# A contact scene has no static or modal analysis (the contact forces are not in them): refused
+# with the reason, not solved as if nothing touched.
+expect_input_error static "$root/examples/net_drop_sphere.yaml" -o "$work/out_static" -q
+[[ $message == *"contact"* ]] || fail "static with contact: the message does not say why: $message"
+expect_input_error modal "$root/examples/net_drop_sphere.yaml" -o "$work/out_modal"
+[[ $message == *"contact"* ]] || fail "modal with contact: the message does not say why: $message"
+
 # Command-line mistakes.
 status=0
 "$ancfnet" run >/dev/null 2>&1 || status=$?

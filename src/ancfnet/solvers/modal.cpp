@@ -83,6 +83,10 @@ LinearSystem Linearise(const Model& model, const DofMap& dofs, const VectorXd& q
     throw InputError(
         "modal analysis: the model has a free rigid body (its rotation coordinates are not "
         "linearised); make the bodies fixed (motion: fixed)");
+  if (!model.contact().targets.empty() || model.contact().self_contact)
+    throw InputError(
+        "modal analysis: the scene has contact (targets or self_contact), which the linearisation "
+        "does not include; remove the contact section to find the free modes");
   Workspace ws(model);
   SystemMatrix matrix(model, dofs);
   const VectorXd rest = VectorXd::Zero(model.num_dofs());

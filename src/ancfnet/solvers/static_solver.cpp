@@ -77,6 +77,12 @@ SolveResult SolveStatic(const Model& model, const StaticSettings& settings,
     throw InputError(
         "static analysis: the model has a free rigid body, which has no static equilibrium to "
         "find; make it fixed (motion: fixed) or run a dynamic analysis");
+  // The static residual has no contact forces: a contact scene would be solved as if nothing
+  // touched. Refused until contact enters the static residual (issue 17).
+  if (!model.contact().targets.empty() || model.contact().self_contact)
+    throw InputError(
+        "static analysis: the scene has contact (targets or self_contact), which the static solver "
+        "does not include; run a dynamic analysis to rest, or remove the contact section");
   Workspace ws(model);
   state->v.setZero();
   state->a.setZero();
