@@ -107,6 +107,7 @@ void WriteSummaryJson(const std::filesystem::path& path, const RunSummary& summa
       {"newton_iterations", summary.newton_iterations},
       {"jacobian_updates", summary.jacobian_updates},
       {"step_cuts", summary.step_cuts},
+      {"step_cut_reasons", summary.step_cut_reasons},
       {"pattern_rebuilds", summary.pattern_rebuilds},
       {"wall_time_s", Number(summary.wall_time_s)},
       {"output_time_s", Number(summary.output_time_s)},

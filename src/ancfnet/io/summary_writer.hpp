@@ -2,6 +2,7 @@
 /// @file The JSON summary of a run: how it ended, what it cost, and the final probe values.
 
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,7 @@ struct RunSummary {
   long jacobian_updates = 0;
   long step_cuts = 0;
   long pattern_rebuilds = 0;           ///< new patterns of the iteration matrix (contact)
+  std::map<std::string, long> step_cut_reasons;  ///< rejected attempts by reason
   long outputs = 0;                    ///< output steps written (rows of probes.csv)
   double wall_time_s = 0.0;            ///< whole analysis, outputs included (s)
   double output_time_s = 0.0;          ///< part of it spent writing probes.csv and VTK frames (s)
@@ -34,7 +36,7 @@ struct RunSummary {
 /// Writes `summary` and the final values of `probes` (EvaluateProbe on `state` with
 /// summary.energy and `contacts`, the active contacts at `state`) to `path` as JSON, indented by 2:
 /// `{"status": "completed"|"failed", "message", "analysis", "time", "steps", "newton_iterations",
-/// "jacobian_updates", "step_cuts", "pattern_rebuilds", "wall_time_s", "output_time_s", "energy":
+/// "jacobian_updates", "step_cuts", "step_cut_reasons": {REASON: count}, "pattern_rebuilds", "wall_time_s", "output_time_s", "energy":
 /// {"kinetic", "strain", "gravity", "work", "dissipated", "balance"}, "failures": [{"time", "what",
 /// "tension"}], "probes": {NAME: {"position": [x, y, z]} |
 /// {"velocity": [vx, vy, vz]} | {"energy": {"kinetic", …}} | {"contact": {"active",

@@ -48,6 +48,7 @@ SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings, dou
     result.statistics.pattern_rebuilds += outcome.pattern_rebuilds;
     if (!outcome.accepted) {
       ++result.statistics.step_cuts;
+      ++result.statistics.step_cut_reasons[StepCutReason(outcome.failure)];
       accepted_in_a_row = 0;
       step = 0.5 * h;
       if (step < min_step) {

@@ -1,8 +1,9 @@
 #include "ancfnet/solvers/solve_result.hpp"
 
-#include <cmath>
-
 #include <fmt/format.h>
+
+#include <cmath>
+#include <regex>
 
 #include "ancfnet/common/error.hpp"
 
@@ -18,6 +19,11 @@ bool EmitOutput(const OutputCallback& output, const State& state, const EnergyAc
     result->message = fmt::format("stopped at t = {:.9g}: {}", e.time(), e.what());
     return false;
   }
+}
+
+std::string StepCutReason(const std::string& failure) {
+  static const std::regex kNumber(R"([-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?)");
+  return std::regex_replace(failure, kNumber, "#");
 }
 
 double WeightedRmsNorm(const VectorXd& dx, const VectorXd& x, const std::vector<Index>& coordinates,

@@ -2,6 +2,7 @@
 /// @file What an analysis reports back, and how it hands states to the outputs.
 
 #include <functional>
+#include <map>
 #include <string>
 
 #include "ancfnet/analysis/energy.hpp"
@@ -16,6 +17,8 @@ struct SolveStatistics {
   long jacobian_updates = 0;   ///< factorisations of the iteration matrix
   long step_cuts = 0;          ///< rejected attempts followed by a smaller step
   long pattern_rebuilds = 0;   ///< new patterns of the iteration matrix (contact couplings)
+  /// Rejected attempts by reason (StepCutReason of the failure), so a user sees what cuts the step.
+  std::map<std::string, long> step_cut_reasons;
 };
 
 struct SolveResult {
@@ -33,6 +36,11 @@ using OutputCallback = std::function<void(const State&, const EnergyAccount&)>;
 /// the statistics gathered so far) and returns false: the caller must stop.
 bool EmitOutput(const OutputCallback& output, const State& state, const EnergyAccount& energy,
                 SolveResult* result);
+
+/// The kind of a step failure: its message with every number replaced by '#', so that failures
+/// that differ only in where and how much count together ("no convergence in # iterations",
+/// "self-contact: element # and element # passed through each other").
+std::string StepCutReason(const std::string& failure);
 
 /// Weighted RMS norm √(mean_i (dx_i / (atol + rtol |x_i|))²) over the unknowns (Hairer &
 /// Wanner 1996, II.4); `coordinates` maps unknown i to its entry of x.
