@@ -78,8 +78,4 @@ CableStrain CalcCableStrain(const CableElementParameters& p, const Vector12d& e,
 /// smooth rope law EA φ(ε), φ = (ε + √(ε² + ε_s²))/2 (docs/theory.md, "Tension-only law").
 double CalcCableAxialForce(const CableElementParameters& p, double strain);
 
-/// Largest elastic axial force (N) over the element's axial Gauss points, where the element's
-/// forces are evaluated (for outputs and thread failure).
-double CalcCableMaxTension(const CableElementParameters& p, const Vector12d& e);
-
 }  // namespace ancfnet
