@@ -2,9 +2,9 @@
 // cylinder, wrapped by the angle θ, needs the pull T = W e^{μθ} to lift the weight W on its
 // other end. Here a low-bending-stiffness ANCF cable lies over a horizontal cylinder target; its
 // pulled end is a point mass moved at constant speed u, its other end a hanging point mass of
-// weight W. The tensions are read from the axial strain in the middles of the two straight runs
-// once the sliding is steady; the force the contact probe reports on the cylinder is checked
-// against the two tensions.
+// weight W. The tensions are read in the middles of the two straight runs (recovered from the
+// elements' end forces, as the VTK field is) once the sliding is steady; the force the contact
+// probe reports on the cylinder is checked against the two tensions.
 
 #include <gtest/gtest.h>
 
@@ -13,8 +13,8 @@
 #include <numbers>
 #include <optional>
 
+#include "ancfnet/analysis/cable_tension.hpp"
 #include "ancfnet/analysis/probe.hpp"
-#include "ancfnet/elements/ancf_cable.hpp"
 #include "ancfnet/forces/target_contact.hpp"
 #include "ancfnet/model/model_builder.hpp"
 #include "ancfnet/solvers/dynamic_solver.hpp"
@@ -122,10 +122,11 @@ Capstan RunCapstan(double theta, std::optional<FrictionLaw> friction) {
     const Index e = cable.first_element + static_cast<Index>(s / h);
     const CableElement& element = model.elements()[e];
     const double xi = s / h - std::floor(s / h);
-    const CableStrain strain = CalcCableStrain(element.parameters, model.Gather(element, st.q), xi);
-    // The force along the stretched rope is EA ε_G λ, λ = |r'| = √(1 + 2 ε_G): the conjugate of
-    // the Green strain is per unit reference length (without λ, 0.3 % low here).
-    return CalcCableAxialForce(element.parameters, strain.axial) * std::sqrt(1 + 2 * strain.axial);
+    // The tension recovered from the elements' end forces (analysis/cable_tension.hpp), the
+    // section force N r' along the tangent: N λ, λ = |r'| (without λ, 0.3 % low here).
+    const CableStationForces forces =
+        CalcCableStationForces(model, cable, e - cable.first_element, st.q);
+    return CalcCableStationTension(element.parameters, model.Gather(element, st.q), forces, xi);
   };
   const SolveResult solve = SolveDynamic(
       model, settings, 0.01,

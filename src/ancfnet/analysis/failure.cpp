@@ -2,21 +2,11 @@
 
 #include <cmath>
 
+#include "ancfnet/analysis/cable_tension.hpp"
 #include "ancfnet/assembly/link_forces.hpp"
-#include "ancfnet/elements/ancf_cable.hpp"
 
 namespace ancfnet {
 namespace {
-
-// Largest elastic axial force along a cable (N).
-double CalcCableTension(const Model& model, const Cable& cable, const VectorXd& q) {
-  double tension = -std::numeric_limits<double>::infinity();
-  for (Index e = cable.first_element; e < cable.first_element + cable.num_elements; ++e) {
-    const CableElement& element = model.elements()[e];
-    tension = std::max(tension, CalcCableMaxTension(element.parameters, model.Gather(element, q)));
-  }
-  return tension;
-}
 
 // Breaks link l: marks it and adds the energy it held.
 void BreakLink(const Model& model, Index l, State* state, FailureCheck* check) {
@@ -49,7 +39,7 @@ FailureCheck ApplyFailures(const Model& model, State* state, std::vector<Failure
   const auto& cables = model.cables();
   for (std::size_t c = 0; c < cables.size(); ++c) {
     if (!std::isfinite(cables[c].breaking_force)) continue;
-    const double tension = CalcCableTension(model, cables[c], state->q);
+    const double tension = CalcCableMaxTension(model, cables[c], state->q);
     if (tension < cables[c].breaking_force) continue;
     const int before = check.broken_links;
     for (std::size_t l = 0; l < links.size(); ++l) {

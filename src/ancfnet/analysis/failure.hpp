@@ -29,9 +29,9 @@ struct FailureCheck {
 bool CanFail(const Model& model);
 
 /// Marks in state->link_broken the intact links that fail at the state (their tension T(e, ė)
-/// of the connection law, or the largest axial force of a cable they hold, at or above the
-/// breaking force), appends one event per failed link or cable to `events`, and returns what
-/// broke. Allocates only when something fails.
+/// of the connection law, or the largest elastic tension of a cable they hold, CalcCableMaxTension
+/// of analysis/cable_tension.hpp, at or above the breaking force), appends one event per failed
+/// link or cable to `events`, and returns what broke. Allocates only when something fails.
 FailureCheck ApplyFailures(const Model& model, State* state, std::vector<FailureEvent>* events);
 
 }  // namespace ancfnet

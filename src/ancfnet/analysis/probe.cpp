@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "ancfnet/analysis/cable_tension.hpp"
 #include "ancfnet/analysis/net_metrics.hpp"
 #include "ancfnet/assembly/link_forces.hpp"
 #include "ancfnet/model/rigid_body_kinematics.hpp"
@@ -52,12 +53,8 @@ std::vector<std::string> ProbeColumns(const Probe& probe) {
 ThreadTension CalcMaxThreadTension(const Model& model, const Net& net, const VectorXd& q) {
   ThreadTension result{.tension = -std::numeric_limits<double>::infinity(), .thread = -1};
   for (std::size_t j = 0; j < net.threads.size(); ++j) {
-    const Cable& cable = model.cables()[net.threads[j]];
-    for (Index e = cable.first_element; e < cable.first_element + cable.num_elements; ++e) {
-      const CableElement& element = model.elements()[e];
-      const double t = CalcCableMaxTension(element.parameters, model.Gather(element, q));
-      if (t > result.tension) result = {.tension = t, .thread = static_cast<Index>(j)};
-    }
+    const double t = CalcCableMaxTension(model, model.cables()[net.threads[j]], q);
+    if (t > result.tension) result = {.tension = t, .thread = static_cast<Index>(j)};
   }
   return result;
 }

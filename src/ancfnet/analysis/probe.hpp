@@ -47,8 +47,9 @@ struct Probe {
   Vector3d reference = Vector3d::Zero();  ///< kDistance: the centroid at the start
 };
 
-/// The largest elastic tension over a net's threads (N, at the elements' axial Gauss points) and
-/// the index of its thread in the net (cable net.threads[thread], named NAME.t<thread>).
+/// The largest elastic tension over a net's threads (N, CalcCableMaxTension of
+/// analysis/cable_tension.hpp: at the ends and midpoints of their elements) and the index of its
+/// thread in the net (cable net.threads[thread], named NAME.t<thread>).
 struct ThreadTension {
   double tension = 0.0;
   Index thread = -1;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "ancfnet/common/quadrature.hpp"
 #include "ancfnet/elements/hermite_shape.hpp"
@@ -249,15 +248,6 @@ double CalcCableAxialForce(const CableElementParameters& p, double strain) {
   if (p.rope_smoothing_strain > 0.0)
     return p.axial_stiffness * CalcSmoothRopeLaw(strain, p.rope_smoothing_strain).force;
   return p.axial_stiffness * std::max(strain, 0.0);
-}
-
-double CalcCableMaxTension(const CableElementParameters& p, const Vector12d& e) {
-  const GaussRule& axial = GetGaussRule(p.axial_gauss_points);
-  double tension = -std::numeric_limits<double>::infinity();
-  for (int i = 0; i < axial.size; ++i)
-    tension =
-        std::max(tension, CalcCableAxialForce(p, CalcCableStrain(p, e, axial.points[i]).axial));
-  return tension;
 }
 
 double CalcCableStrainEnergy(const CableElementParameters& p, const Vector12d& e) {

@@ -78,8 +78,4 @@ CableStrain CalcCableStrain(const CableElementParameters& p, const Vector12d& e,
 /// smooth rope law EA φ(ε) of elements/rope_law.hpp (docs/theory.md, "Smooth rope law").
 double CalcCableAxialForce(const CableElementParameters& p, double strain);
 
-/// Largest elastic axial force (N) over the element's axial Gauss points, where the element's
-/// forces are evaluated (for outputs and thread failure).
-double CalcCableMaxTension(const CableElementParameters& p, const Vector12d& e);
-
 }  // namespace ancfnet

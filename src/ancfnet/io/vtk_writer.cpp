@@ -5,6 +5,7 @@
 #include <cmath>
 #include <iterator>
 
+#include "ancfnet/analysis/cable_tension.hpp"
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/elements/ancf_cable.hpp"
 #include "ancfnet/elements/hermite_shape.hpp"
@@ -41,13 +42,14 @@ void VtkSeriesWriter::CollectSamples(const Model& model, const State& state) {
       const CableElementParameters& p = element.parameters;
       const Vector12d e = model.Gather(element, state.q);
       const Vector12d e_dot = model.Gather(element, state.v);
+      const CableStationForces forces = CalcCableStationForces(model, cable, k, state.q);
       // The last element also draws its end node; the others leave it to the next element.
       const int last = k + 1 == cable.num_elements ? points_per_element_ : points_per_element_ - 1;
       for (int i = 0; i <= last; ++i) {
         const double xi = static_cast<double>(i) / points_per_element_;
         const HermiteShape shape = CalcHermiteShape(xi, p.length);
         const CableStrain strain = CalcCableStrain(p, e, xi);
-        const double tension = CalcCableAxialForce(p, strain.axial);
+        const double tension = CalcCableStationTension(p, e, forces, xi);
         samples_.push_back({InterpolatePosition(e, shape.s), InterpolatePosition(e_dot, shape.s),
                             strain.axial, strain.curvature, tension});
       }

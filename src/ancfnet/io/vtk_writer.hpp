@@ -19,9 +19,11 @@ namespace ancfnet {
 /// `points_per_element` equal steps of ξ per element; the node shared by two elements appears
 /// once, so a cable of n elements has n · points_per_element + 1 points. Point data:
 ///  - `velocity` ṙ(ξ) = S(ξ) ė (m/s), 3 components;
-///  - `axial_strain` ε = (r'·r' − 1)/2 and `curvature` κ (1/m), from CalcCableStrain;
-///  - `tension` N = EA ε (N), or 0 where a tension-only cable is in compression (elastic part
-///    only: Kelvin–Voigt damping forces are not included).
+///  - `axial_strain` ε = (r'·r' − 1)/2 and `curvature` κ (1/m), from CalcCableStrain at the point
+///    (ε there is the interpolation's: in a stiff element it oscillates about the true strain);
+///  - `tension` T (N), the elastic section force along the tangent recovered from the elements'
+///    resultant forces (CalcCableStationForces, CalcCableStationTension; docs/theory.md, "Tension
+///    recovery"), never below 0 in a tension-only cable. Kelvin–Voigt damping is not included.
 /// After the cables, each rigid body adds its frame: 4 points (its origin x_WB and the tips of its
 /// body axes, drawn as long as its radius of gyration √(tr J_B / m)) and 3 two-point lines, with
 /// their velocities and zero strain, curvature and tension.

@@ -12,7 +12,7 @@ namespace {
 
 // Three knots on the x-axis at 0, 1, 2 m joined by two 1 m threads (ideal knots). The second
 // thread is stretched uniformly by λ = 1.02 (its far knot moved to 2.02 m, its slopes λ e_x):
-// ε = (λ² − 1)/2 there, none in the first.
+// ε = (λ² − 1)/2 there, none in the first. Its tension is the section force EA ε λ.
 TEST(NetProbe, MaxTensionFindsTheStretchedThread) {
   NetSpec spec;
   spec.name = "line";
@@ -33,7 +33,7 @@ TEST(NetProbe, MaxTensionFindsTheStretchedThread) {
     state.q.segment<3>(model.NodeSlopeDof(node)) = Vector3d(stretch, 0, 0);
 
   const ThreadTension t = CalcMaxThreadTension(model, net, state.q);
-  const double expected = spec.thread.axial_stiffness * 0.5 * (stretch * stretch - 1.0);
+  const double expected = spec.thread.axial_stiffness * 0.5 * (stretch * stretch - 1.0) * stretch;
   EXPECT_NEAR(t.tension, expected, 1e-9 * expected);
   EXPECT_EQ(t.thread, 1);
 

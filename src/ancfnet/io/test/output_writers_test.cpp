@@ -14,11 +14,16 @@
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/io/probe_csv_writer.hpp"
 #include "ancfnet/io/summary_writer.hpp"
+#include "ancfnet/io/test/output_test_files.hpp"
 #include "ancfnet/io/vtk_writer.hpp"
 #include "ancfnet/model/model_builder.hpp"
 
 namespace ancfnet {
 namespace {
+
+using test::MakeTestDirectory;
+using test::ReadDataArray;
+using test::ReadFile;
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
@@ -54,24 +59,6 @@ std::vector<Probe> MakeProbes(const Model& model) {
       {"tip", ProbeQuantity::kPosition, model.LocateMaterialPoint(model.LocateCablePoint(0, 1.0))},
       {"mid", ProbeQuantity::kVelocity, model.LocateMaterialPoint(model.LocateCablePoint(1, 0.3))},
       {"e", ProbeQuantity::kEnergy, {}}};
-}
-
-// An empty directory of its own for the running test.
-std::filesystem::path MakeTestDirectory() {
-  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  const std::filesystem::path dir =
-      std::filesystem::path(::testing::TempDir()) /
-      fmt::format("ancfnet_{}_{}", info->test_suite_name(), info->name());
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
-  return dir;
-}
-
-std::string ReadFile(const std::filesystem::path& path) {
-  std::ifstream file(path);
-  std::stringstream text;
-  text << file.rdbuf();
-  return text.str();
 }
 
 std::vector<std::string> SplitLines(const std::string& text) {
@@ -146,19 +133,6 @@ TEST(ProbeCsvWriter, UnwritablePathIsAnInputError) {
   const Model model = MakeModel();
   EXPECT_THROW(ProbeCsvWriter(MakeTestDirectory() / "missing" / "probes.csv", MakeProbes(model)),
                InputError);
-}
-
-// The numbers of the DataArray called `name` in a VTK XML file.
-std::vector<double> ReadDataArray(const std::string& xml, const std::string& name) {
-  const std::size_t tag = xml.find("Name=\"" + name + "\"");
-  EXPECT_NE(tag, std::string::npos) << name;
-  if (tag == std::string::npos) return {};
-  const std::size_t begin = xml.find('>', tag) + 1;
-  const std::size_t end = xml.find("</DataArray>", begin);
-  std::istringstream stream(xml.substr(begin, end - begin));
-  std::vector<double> values;
-  for (double value; stream >> value;) values.push_back(value);
-  return values;
 }
 
 Vector3d PointAt(const std::vector<double>& points, Index i) {
@@ -260,11 +234,13 @@ std::string WriteUniformlyStretchedFrame(bool tension_only, double stretch,
   return ReadFile(writer.FramePath(0));
 }
 
-TEST(VtkSeriesWriter, TensionOfAStretchedCableIsAxialStiffnessTimesStrain) {
+// The section force of a uniformly stretched cable is N r' = EA ε λ t, so its tension is EA ε λ.
+TEST(VtkSeriesWriter, TensionOfAStretchedCableIsItsSectionForce) {
   const Model model = MakeModel();
   const double ea = model.elements()[0].parameters.axial_stiffness;
   const double stretch = 1.01;
   const double strain = 0.5 * (stretch * stretch - 1.0);
+  const double expected = ea * strain * stretch;
   const std::string xml = WriteUniformlyStretchedFrame(false, stretch, MakeTestDirectory());
   const std::vector<double> tension = ReadDataArray(xml, "tension");
   const std::vector<double> axial = ReadDataArray(xml, "axial_strain");
@@ -272,7 +248,7 @@ TEST(VtkSeriesWriter, TensionOfAStretchedCableIsAxialStiffnessTimesStrain) {
   ASSERT_EQ(axial.size(), tension.size());
   for (std::size_t i = 0; i < tension.size(); ++i) {
     EXPECT_NEAR(axial[i], strain, 1e-12) << i;
-    EXPECT_NEAR(tension[i], ea * strain, 1e-9 * ea * strain) << i;
+    EXPECT_NEAR(tension[i], expected, 1e-9 * expected) << i;
   }
   for (double kappa : ReadDataArray(xml, "curvature")) EXPECT_NEAR(kappa, 0.0, 1e-12);
 }
