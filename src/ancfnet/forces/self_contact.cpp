@@ -64,16 +64,12 @@ int SelfContact::Blocks(const SelfContactPrimitive& p, double s, std::array<doub
   return 4;
 }
 
-void SelfContact::AddOwnBlocks(const SelfContactPrimitive& p, const std::array<double, 4>& weight,
-                               const Matrix3d& k, SystemMatrix* matrix) const {
-  if (p.element < 0) {
-    matrix->AddPointMassBlock(p.point_mass, k);
-    return;
-  }
-  Matrix12d block;
-  for (int i = 0; i < 4; ++i)
-    for (int j = 0; j < 4; ++j) block.block<3, 3>(3 * i, 3 * j) = weight[i] * weight[j] * k;
-  matrix->AddElementBlock(p.element, block);
+void SelfContact::AddOwnBlocks(const SelfContactPrimitive& p, const Matrix24d& jacobian, int first,
+                               SystemMatrix* matrix) const {
+  if (p.element < 0)
+    matrix->AddPointMassBlock(p.point_mass, jacobian.block<3, 3>(first, first));
+  else
+    matrix->AddElementBlock(p.element, jacobian.block<12, 12>(first, first));
 }
 
 SelfContact::PairState SelfContact::CalcPair(const Candidate& c, const VectorXd& q,
@@ -106,6 +102,26 @@ SelfContact::PairState SelfContact::CalcPair(const Candidate& c, const VectorXd&
   const ContactSpec& spec = model_.contact();
   r.force = CalcContactPairForce(spec.normal, spec.friction, k, c.history.speed, c.history.bristle,
                                  step_, detail == PairDetail::kJacobian);
+  if (detail != PairDetail::kJacobian || !r.force.touching) return r;
+  // A closest point inside its axis moves with the coordinates (not for parallel axes, whose
+  // closest pair is not unique).
+  const auto side = [&](const SelfContactPrimitive& p, const Axis& axis, double parameter,
+                        SegmentPart part) {
+    SelfPairSide out;
+    if (p.element >= 0) {
+      out.num_blocks = 4;
+      out.weights = (1.0 - parameter) * p.shape0 + parameter * p.shape1;
+      out.weight_rates = p.shape1 - p.shape0;
+    }
+    out.axis = axis.x1 - axis.x0;
+    out.axis_rate = axis.v1 - axis.v0;
+    out.moving_point =
+        part == SegmentPart::kInterior && !d.axes.parallel && out.axis.squaredNorm() > 0.0;
+    return out;
+  };
+  r.side_a = side(pa, a, r.s, d.axes.part_p);
+  r.side_b = side(pb, b, r.t, d.axes.part_q);
+  r.separation = d.axes.closest_p - d.axes.closest_q;
   return r;
 }
 
@@ -193,40 +209,40 @@ void SelfContact::AddForces(const VectorXd& q, const VectorXd& v, Workspace& ws)
 
 void SelfContact::AddJacobian(const VectorXd& q, const VectorXd& v, const IterationWeights& weights,
                               SystemMatrix* matrix) const {
-  std::array<double, 4> wa, wb;
-  std::array<Index, 4> da, db;
   for (const Candidate& c : candidates_) {
     const PairState pair = CalcPair(c, q, v, PairDetail::kJacobian);
     if (!pair.force.touching) continue;
-    const int na = Blocks(primitives_[c.a], pair.s, &wa, &da);
-    const int nb = Blocks(primitives_[c.b], pair.t, &wb, &db);
-    // Q_a = −W_aᵀ f, Q_b = W_bᵀ f with f(x_a − x_b): ∂Q_a/∂q_a = −W_aᵀ (∂f/∂x) W_a, etc.
-    const Matrix3d k =
-        -(weights.stiffness * pair.force.dforce_dx + weights.damping * pair.force.dforce_dv);
-    const Index owner_a = primitives_[c.a].owner, owner_b = primitives_[c.b].owner;
-    const bool a_first = owner_a <= owner_b;
+    const Matrix24d jacobian = CalcSelfPairJacobian(pair.side_a, pair.side_b, pair.separation,
+                                                    pair.force, weights.stiffness, weights.damping);
+    const SelfContactPrimitive& pa = primitives_[c.a];
+    const SelfContactPrimitive& pb = primitives_[c.b];
+    const int na = pair.side_a.num_blocks, nb = pair.side_b.num_blocks;
+    if (pa.element >= 0 && pa.element == pb.element) {
+      // Both on one element: every block is the element's own.
+      Matrix12d block = Matrix12d::Zero();
+      for (int i : {0, 12})
+        for (int j : {0, 12}) block += jacobian.block<12, 12>(i, j);
+      matrix->AddElementBlock(pa.element, block);
+      continue;
+    }
     const int coupling =
-        matrix->FindContactCoupling(std::min(owner_a, owner_b), std::max(owner_a, owner_b));
+        matrix->FindContactCoupling(std::min(pa.owner, pb.owner), std::max(pa.owner, pb.owner));
     if (!c.coupled || coupling < 0) {
       // Apart at the step start (even where the pattern still holds their coupling, so that the
       // matrix does not depend on the pattern's history): each primitive's own blocks only.
-      AddOwnBlocks(primitives_[c.a], wa, k, matrix);
-      AddOwnBlocks(primitives_[c.b], wb, k, matrix);
+      AddOwnBlocks(pa, jacobian, 0, matrix);
+      AddOwnBlocks(pb, jacobian, 12, matrix);
       continue;
     }
+    // The coupling's blocks: the lower owner's first.
+    const bool a_first = pa.owner <= pb.owner;
     const int offset_a = a_first ? 0 : nb, offset_b = a_first ? na : 0;
-    for (int i = 0; i < na; ++i) {
-      for (int j = 0; j < na; ++j)
-        matrix->AddContactBlock(coupling, offset_a + i, offset_a + j, k, wa[i] * wa[j]);
-      for (int j = 0; j < nb; ++j)
-        matrix->AddContactBlock(coupling, offset_a + i, offset_b + j, k, -wa[i] * wb[j]);
-    }
-    for (int i = 0; i < nb; ++i) {
-      for (int j = 0; j < na; ++j)
-        matrix->AddContactBlock(coupling, offset_b + i, offset_a + j, k, -wb[i] * wa[j]);
-      for (int j = 0; j < nb; ++j)
-        matrix->AddContactBlock(coupling, offset_b + i, offset_b + j, k, wb[i] * wb[j]);
-    }
+    const auto block_of = [&](int k) { return k < na ? offset_a + k : offset_b + (k - na); };
+    const auto row_of = [&](int k) { return k < na ? 3 * k : 12 + 3 * (k - na); };
+    for (int i = 0; i < na + nb; ++i)
+      for (int j = 0; j < na + nb; ++j)
+        matrix->AddContactBlock(coupling, block_of(i), block_of(j),
+                                jacobian.block<3, 3>(row_of(i), row_of(j)));
   }
 }
 

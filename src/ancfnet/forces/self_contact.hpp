@@ -17,6 +17,7 @@
 #include "ancfnet/contact/contact_point.hpp"
 #include "ancfnet/contact/distance/segment_segment.hpp"
 #include "ancfnet/contact/self_contact_primitives.hpp"
+#include "ancfnet/contact/self_pair_jacobian.hpp"
 #include "ancfnet/model/model.hpp"
 #include "ancfnet/state/state.hpp"
 #include "ancfnet/state/workspace.hpp"
@@ -49,11 +50,12 @@ class SelfContact {
   /// ws.internal_force −= Qᵀ f, ws.viscous_force alike, ws.contact_energy += Σ ∫ F_el dδ over
   /// the touching candidate pairs at (q, v).
   void AddForces(const VectorXd& q, const VectorXd& v, Workspace& ws) const;
-  /// matrix += c_K ∂Q/∂q + c_C ∂Q/∂q̇ of the touching candidates, the closest-point parameters
-  /// held fixed: into the contact coupling of a coupled pair (coupled_owners() must have been
-  /// added to `matrix`), and for the others (or without the coupling) only the blocks of each
-  /// primitive with itself (a quasi-Newton matrix for a pair that was apart at the step start;
-  /// the residual stays exact).
+  /// matrix += c_K ∂Q/∂q + c_C ∂Q/∂q̇ of the touching candidates, complete (CalcSelfPairJacobian:
+  /// the closest points moving with the coordinates, friction's tangent plane turning): into the
+  /// contact coupling of a coupled pair (coupled_owners() must have been added to `matrix`), and
+  /// for the others (or without the coupling) only the blocks of each primitive with itself, or
+  /// all of them when both lie on one element (a quasi-Newton matrix for a pair that was apart at
+  /// the step start; the residual stays exact).
   void AddJacobian(const VectorXd& q, const VectorXd& v, const IterationWeights& weights,
                    SystemMatrix* matrix) const;
   /// Empty when the step to q may be accepted; else why not: a primitive moved farther than its
@@ -97,6 +99,9 @@ class SelfContact {
     Vector3d direction = Vector3d::UnitZ();
     Vector3d velocity = Vector3d::Zero();
     ContactPairForce force;
+    // For the Jacobian (PairDetail::kJacobian): each side's axis and closest point, x_a − x_b.
+    SelfPairSide side_a, side_b;
+    Vector3d separation = Vector3d::Zero();
   };
   enum class PairDetail { kGeometry, kForce, kJacobian };
   // Whether a closest point at `part` of capsule p, seen in `direction` (from the other body
@@ -110,9 +115,10 @@ class SelfContact {
   // and the blocks' first coordinates.
   int Blocks(const SelfContactPrimitive& p, double s, std::array<double, 4>* weight,
              std::array<Index, 4>* dof) const;
-  // matrix += Wᵀ k W on p's own blocks (element or point mass), W the blocks' weights.
-  void AddOwnBlocks(const SelfContactPrimitive& p, const std::array<double, 4>& weight,
-                    const Matrix3d& k, SystemMatrix* matrix) const;
+  // matrix += the Jacobian's blocks of primitive p (rows and columns from `first`, 0 or 12) with
+  // itself, on its element's or point mass's own blocks.
+  void AddOwnBlocks(const SelfContactPrimitive& p, const Matrix24d& jacobian, int first,
+                    SystemMatrix* matrix) const;
 
   const Model& model_;
   std::vector<SelfContactPrimitive> primitives_;

@@ -156,18 +156,32 @@ TargetContact::PairForce TargetContact::CalcPairForce(const Frame& frame, const 
       spec.normal, spec.friction, kinematics, history.speed, bristle, step_, with_jacobian);
   if (frame.body >= 0) r.bristle = frame.pose.R_WB.transpose() * r.bristle;
   r.t = point.t;
+  r.surface_point = point.x - (probe.radius - kinematics.penetration) * kinematics.normal;
+  r.normal = kinematics.normal;
+  if (!with_jacobian || !r.touching) return r;
+  TargetPairGeometry& g = r.geometry;
+  if (probe.element >= 0) {
+    g.num_blocks = 4;
+    g.weights = CalcWeights(probe, point.t);
+    g.weight_rates = probe.shape1 - probe.shape0;
+  }
   // An interior minimum where φ is smooth (φ' = n·Δ ≈ 0, φ'' > 0): t* moves with the positions.
   const double slope = point.distance.normal.dot(point.axis);
   const double curvature = point.axis.dot(point.distance.hessian * point.axis);
-  if (with_jacobian && point.t > 0.0 && point.t < 1.0 && curvature > 0.0 &&
-      std::abs(slope) <= 1e-9 * point.axis.norm()) {
-    r.axis = point.axis;
-    r.axis_rate = point.axis_rate;
-    r.hessian = point.distance.hessian;
-    r.curvature = curvature;
+  g.moving_point = point.t > 0.0 && point.t < 1.0 && curvature > 0.0 &&
+                   std::abs(slope) <= 1e-9 * point.axis.norm();
+  g.axis = point.axis;
+  g.axis_rate = point.axis_rate;
+  g.point = point.x;
+  g.distance = point.distance.distance;
+  g.normal = point.distance.normal;
+  g.hessian = point.distance.hessian;
+  if (frame.body >= 0) {
+    g.on_body = true;
+    g.pose = frame.pose;
+    g.angular_velocity = frame.pose.R_WB * frame.velocity.w_B;
+    g.bristle = bristle;
   }
-  r.surface_point = point.x - (probe.radius - kinematics.penetration) * kinematics.normal;
-  r.normal = kinematics.normal;
   return r;
 }
 
@@ -248,49 +262,27 @@ void TargetContact::AddJacobian(const VectorXd& q, const VectorXd& v,
                                 const std::vector<ContactPairHistory>& history,
                                 const IterationWeights& weights, SystemMatrix* matrix) const {
   ForEachTouchingPair(q, v, history, true, [&](const ContactProbe& probe, const PairForce& f) {
-    // Q = −Sᵀ f(x − x_s): ∂Q/∂e = −Sᵀ (∂f/∂x) S, with B = −(c_K ∂f/∂x + c_C ∂f/∂ẋ) and
-    // S = S(t*) held fixed.
-    const Matrix3d block = -(weights.stiffness * f.dforce_dx + weights.damping * f.dforce_dv);
-    const int num_blocks = probe.element < 0 ? 1 : 4;
-    const Vector4d w = CalcWeights(probe, f.t);
-    auto weight = [&](int i) { return probe.element < 0 ? 1.0 : w[i]; };
-    if (probe.element < 0) {
-      matrix->AddPointMassBlock(probe.point_mass, block);
-    } else {
-      Matrix12d element_block;
-      for (int i = 0; i < 4; ++i)
-        for (int j = 0; j < 4; ++j) element_block.block<3, 3>(3 * i, 3 * j) = w[i] * w[j] * block;
-      if (f.curvature > 0.0) {
-        // The motion of t*, ∂t*/∂e_k = −(w_k Δᵀ H + d_k nᵀ)/φ'' with d = S(ξ₁) − S(ξ₀), moves
-        // the point, its velocity (b = ∂f/∂x Δ + ∂f/∂ẋ Δ̇) and the weights of −w_i f:
-        // += c_K (w_i b + d_i f)(w_k Δᵀ H + d_k nᵀ)/φ''.
-        const Vector4d d = probe.shape1 - probe.shape0;
-        const Vector3d b = f.dforce_dx * f.axis + f.dforce_dv * f.axis_rate;
-        const Eigen::RowVector3d h = f.axis.transpose() * f.hessian;
-        for (int i = 0; i < 4; ++i)
-          for (int j = 0; j < 4; ++j)
-            element_block.block<3, 3>(3 * i, 3 * j) += (weights.stiffness / f.curvature) *
-                                                       (w[i] * b + d[i] * f.force) *
-                                                       (w[j] * h + d[j] * f.normal.transpose());
-      }
-      matrix->AddElementBlock(probe.element, element_block);
-    }
+    const Matrix18d jacobian =
+        CalcTargetPairJacobian(f.geometry, f, weights.stiffness, weights.damping);
+    if (probe.element < 0)
+      matrix->AddPointMassBlock(probe.point_mass, jacobian.topLeftCorner<3, 3>());
+    else
+      matrix->AddElementBlock(probe.element, jacobian.topLeftCorner<12, 12>());
     const Frame& frame = frames_[f.target];
     if (frame.body < 0) return;
-    // The contact point moves with the body as G (ẋ_WB, ω_B): probe–body blocks −Wᵀ B G and
-    // −Gᵀ B W, body–body Gᵀ B G (G held fixed: its change with the rotation is left out).
-    const Matrix3x6d G = CalcPointVelocityMap(frame.pose, f.surface_point);
-    const Matrix3d g[2] = {G.leftCols<3>(), G.rightCols<3>()};
     for (int i = 0; i < 2; ++i)
       for (int j = 0; j < 2; ++j)
-        matrix->AddBodyBlock(frame.body, i, j, g[i].transpose() * block * g[j]);
+        matrix->AddBodyBlock(frame.body, i, j, jacobian.block<3, 3>(12 + 3 * i, 12 + 3 * j));
     const int coupling =
         matrix->FindContactCoupling(ProbeOwner(probe), matrix->BodyOwner(frame.body));
     if (coupling < 0) return;
+    const int num_blocks = f.geometry.num_blocks;
     for (int i = 0; i < num_blocks; ++i)
       for (int j = 0; j < 2; ++j) {
-        matrix->AddContactBlock(coupling, i, num_blocks + j, block * g[j], -weight(i));
-        matrix->AddContactBlock(coupling, num_blocks + j, i, g[j].transpose() * block, -weight(i));
+        matrix->AddContactBlock(coupling, i, num_blocks + j,
+                                jacobian.block<3, 3>(3 * i, 12 + 3 * j));
+        matrix->AddContactBlock(coupling, num_blocks + j, i,
+                                jacobian.block<3, 3>(12 + 3 * j, 3 * i));
       }
   });
 }

@@ -13,6 +13,7 @@
 #include "ancfnet/contact/contact_pair_force.hpp"
 #include "ancfnet/contact/contact_point.hpp"
 #include "ancfnet/contact/target_distance.hpp"
+#include "ancfnet/contact/target_pair_jacobian.hpp"
 #include "ancfnet/model/model.hpp"
 #include "ancfnet/model/rigid_body_kinematics.hpp"
 #include "ancfnet/state/state.hpp"
@@ -66,11 +67,11 @@ class TargetContact {
   /// ws.contact_energy = Σ ∫ F_elastic dδ. `history` is each pair's at the start of the step.
   void AddForces(const VectorXd& q, const VectorXd& v,
                  const std::vector<ContactPairHistory>& history, Workspace& ws) const;
-  /// matrix += c_K ∂Q/∂q + c_C ∂Q/∂q̇ of the contact forces; for a capsule whose t* lies inside
-  /// its axis at a smooth minimum, with the motion of t* with the element's coordinates
-  /// (docs/theory.md, "Capsule chains against rigid targets"). Left out: the friction force's
-  /// dependence on the positions through the tangent plane, and the motion of t* with the pose
-  /// of a body carrying the target.
+  /// matrix += c_K ∂Q/∂q + c_C ∂Q/∂q̇ of the contact forces, complete (CalcTargetPairJacobian:
+  /// the tangent plane turning, t* of a capsule at an interior smooth minimum moving with the
+  /// element's coordinates and the body's pose, the slip and the reaction's moment arm varying
+  /// with the pose; docs/theory.md, "Complete contact Jacobians"). A probe without a coupling to
+  /// the body (FindBodyCouplings) adds its own blocks and the body's, not those between them.
   void AddJacobian(const VectorXd& q, const VectorXd& v,
                    const std::vector<ContactPairHistory>& history, const IterationWeights& weights,
                    SystemMatrix* matrix) const;
@@ -110,12 +111,7 @@ class TargetContact {
     double t = 0.0;                             // t* of the probe's point on its axis
     Vector3d surface_point = Vector3d::Zero();  // closest point of the target's surface (m)
     Vector3d normal = Vector3d::UnitZ();        // outward normal of the target
-    // A capsule at an interior, smooth t*: Δ = x₁ − x₀, Δ̇, H = ∂n/∂x and φ'' = Δᵀ H Δ > 0 for
-    // the motion of t* in the Jacobian (φ'' = 0: t* held fixed).
-    Vector3d axis = Vector3d::Zero();
-    Vector3d axis_rate = Vector3d::Zero();
-    Matrix3d hessian = Matrix3d::Zero();
-    double curvature = 0.0;
+    TargetPairGeometry geometry;                // for the Jacobian (with_jacobian only)
   };
   // Where a target is: fixed, or moving with its body.
   struct Frame {

@@ -29,6 +29,7 @@ TangentialBristleStep CalcTangentialBristleFriction(const FrictionLaw& law, cons
   f.dforce_dvelocity = -n * (h * sigma0 + law.bristle_damping) * dz_dot_dv -
                        law.viscous_damping * Matrix3d::Identity();
   if (normal_force > 0.0) f.dforce_dnormal = -bristle;
+  out.dforce_ddeflection = -n * (sigma0 - law.bristle_damping * phi) / den;
   return out;
 }
 

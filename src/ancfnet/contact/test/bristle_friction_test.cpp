@@ -1,7 +1,8 @@
 // The LuGre bristle in the tangent plane: at rest it holds the force σ₀ N z of its deflection;
 // sliding steadily it tends to the Stribeck force N g(s) against the slip, whatever direction
 // it was deflected in before; its one-axis case is FrictionLaw::StepBristle; its derivatives
-// with respect to the slip velocity and the normal force match central differences.
+// with respect to the slip velocity, the normal force and the starting deflection match central
+// differences.
 
 #include "ancfnet/contact/laws/bristle_friction.hpp"
 
@@ -75,6 +76,18 @@ TEST(BristleFriction, DerivativesMatchFiniteDifferences) {
            CalcTangentialBristleFriction(kLaw, z0, v, 5.0 - dn, h).friction.force) /
           (2 * dn);
       EXPECT_LT((s.friction.dforce_dnormal - fd_n).norm(), 1e-7 * fd_n.norm());
+      const double dz = 1e-10;
+      Matrix3d fd_z;
+      for (int k = 0; k < 3; ++k) {
+        Vector3d zp = z0, zm = z0;
+        zp[k] += dz;
+        zm[k] -= dz;
+        fd_z.col(k) = (CalcTangentialBristleFriction(kLaw, zp, v, 5.0, h).friction.force -
+                       CalcTangentialBristleFriction(kLaw, zm, v, 5.0, h).friction.force) /
+                      (2 * dz);
+      }
+      EXPECT_LT((s.dforce_ddeflection * Matrix3d::Identity() - fd_z).norm(), 1e-6 * fd_z.norm())
+          << "h = " << h << ", v = " << v.transpose();
     }
   }
 }
