@@ -9,24 +9,16 @@
 
 #include "ancfnet/common/quadrature.hpp"
 #include "ancfnet/elements/hermite_shape.hpp"
+#include "ancfnet/elements/test/cable_element_fixtures.hpp"
 
 namespace ancfnet {
 namespace {
 
-CableElementParameters MakeParameters() {
-  CableElementParameters p;
-  p.length = 0.25;
-  p.axial_stiffness = 2.0e4;
-  p.bending_stiffness = 3.0;
-  p.mass_per_length = 0.78;
-  return p;
-}
+CableElementParameters MakeParameters() { return test::MakeCableTestParameters(); }
 
 // Nodal coordinates of a straight element from the origin along `dir` (unit), stretched by λ.
 Vector12d StraightElement(const Vector3d& dir, double length, double stretch) {
-  Vector12d e;
-  e << Vector3d::Zero(), stretch * dir, stretch * length * dir, stretch * dir;
-  return e;
+  return test::StraightElement(Vector3d::Zero(), dir, length, stretch);
 }
 
 // A bent, stretched configuration with no symmetry.

@@ -7,25 +7,14 @@
 #include <cmath>
 
 #include "ancfnet/elements/hermite_shape.hpp"
+#include "ancfnet/elements/test/cable_element_fixtures.hpp"
 
 namespace ancfnet {
 namespace {
 
-CableElementParameters MakeParameters() {
-  CableElementParameters p;
-  p.length = 0.25;
-  p.axial_stiffness = 2.0e4;
-  p.bending_stiffness = 3.0;
-  p.mass_per_length = 0.78;
-  return p;
-}
+CableElementParameters MakeParameters() { return test::MakeCableTestParameters(); }
 
-// Nodal coordinates of a straight element from x0 along `dir` (unit), stretched by `stretch`.
-Vector12d StraightElement(const Vector3d& x0, const Vector3d& dir, double length, double stretch) {
-  Vector12d e;
-  e << x0, stretch * dir, x0 + stretch * length * dir, stretch * dir;
-  return e;
-}
+using test::StraightElement;
 
 // A generic bent, stretched and twisted configuration (no symmetry to hide sign errors).
 Vector12d BentElement() {

@@ -16,7 +16,6 @@ namespace ancfnet {
 namespace {
 
 Model MakeCableOnATumblingBox(const std::optional<FrictionLaw>& friction) {
-  Material nylon{.youngs_modulus = 3e9, .density = 1140};
   ModelBuilder builder;
   const Matrix3d turn = Eigen::AngleAxisd(0.4, Vector3d(1, 2, 3).normalized()).toRotationMatrix();
   builder.AddRigidBody({.name = "target",
@@ -31,15 +30,8 @@ Model MakeCableOnATumblingBox(const std::optional<FrictionLaw>& friction) {
       Vector3d(0.01, -0.02, 0.03) + turn * Vector3d(-0.2, 0.01, 0.1 + 0.002 - 0.0015);
   const Vector3d b =
       Vector3d(0.01, -0.02, 0.03) + turn * Vector3d(0.2, -0.02, 0.1 + 0.002 - 0.0012);
-  builder.AddCable({.name = "rope",
-                    .start = a,
-                    .end = b,
-                    .num_elements = 2,
-                    .properties = MakeCableProperties(nylon, MakeCircleSection(0.004))});
-  ContactSpec spec;
-  spec.normal = MakeDissipativeContactLaw(NormalLawKind::kCarvalhoMartins, 1e6, 0.4);
-  spec.friction = friction;
-  spec.points_per_element = 5;
+  test::AddTestRope(a, b, &builder);
+  ContactSpec spec = test::MakeTestContactSpec(friction);
   ContactTarget box;
   box.kind = ContactTarget::Kind::kBox;
   box.half_extents = Vector3d(0.3, 0.3, 0.1);

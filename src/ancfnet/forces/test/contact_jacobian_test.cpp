@@ -87,7 +87,6 @@ const Matrix3d kBodyRotation =
 
 Model MakeCableOnTarget(const TargetCase& c, const std::optional<FrictionLaw>& friction,
                         ContactSpec::TargetGeometry geometry, bool on_body) {
-  Material nylon{.youngs_modulus = 3e9, .density = 1140};
   ModelBuilder builder;
   Vector3d a = c.a, b = c.b;
   ContactTarget target = c.target;
@@ -103,16 +102,9 @@ Model MakeCableOnTarget(const TargetCase& c, const std::optional<FrictionLaw>& f
     b = kBodyPosition + kBodyRotation * b;
     target.body_name = "target";
   }
-  builder.AddCable({.name = "rope",
-                    .start = a,
-                    .end = b,
-                    .num_elements = 2,
-                    .properties = MakeCableProperties(nylon, MakeCircleSection(0.004))});
-  ContactSpec spec;
-  spec.normal = MakeDissipativeContactLaw(NormalLawKind::kCarvalhoMartins, 1e6, 0.4);
-  spec.friction = friction;
+  test::AddTestRope(a, b, &builder);
+  ContactSpec spec = test::MakeTestContactSpec(friction);
   spec.target_geometry = geometry;
-  spec.points_per_element = 5;
   spec.capsules_per_element = 3;
   spec.targets.push_back(target);
   builder.SetContact(spec);

@@ -24,7 +24,6 @@ namespace {
 // the elements lies at x = −0.03, so that the deepest point at x ≈ 0 is inside a capsule.
 Model MakeCrossingCable(ContactTarget target, const Vector3d& a, const Vector3d& b,
                         const std::string& body = "") {
-  Material nylon{.youngs_modulus = 3e9, .density = 1140};
   ModelBuilder builder;
   if (!body.empty())
     builder.AddRigidBody({.name = body,
@@ -32,11 +31,7 @@ Model MakeCrossingCable(ContactTarget target, const Vector3d& a, const Vector3d&
                           .inertia = Vector3d(0.2, 0.3, 0.4).asDiagonal(),
                           .velocity = Vector3d(0.1, -0.2, 0.05),
                           .angular_velocity = Vector3d(0.3, -0.5, 0.7)});
-  builder.AddCable({.name = "rope",
-                    .start = a,
-                    .end = b,
-                    .num_elements = 2,
-                    .properties = MakeCableProperties(nylon, MakeCircleSection(0.004))});
+  test::AddTestRope(a, b, &builder);
   ContactSpec spec;
   spec.normal = MakeDissipativeContactLaw(NormalLawKind::kCarvalhoMartins, 1e6, 0.4);
   spec.target_geometry = ContactSpec::TargetGeometry::kCapsules;

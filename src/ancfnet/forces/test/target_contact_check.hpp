@@ -3,13 +3,35 @@
 /// its assembled Jacobian (with the couplings of targets carried by bodies) against central
 /// differences.
 
+#include <optional>
 #include <vector>
 
 #include "ancfnet/assembly/system_matrix.hpp"
 #include "ancfnet/forces/target_contact.hpp"
 #include "ancfnet/forces/test/central_difference_jacobian.hpp"
+#include "ancfnet/model/model_builder.hpp"
 
 namespace ancfnet::test {
+
+/// The contact tests' rope: a 4 mm nylon cable "rope" of two elements from a to b.
+inline void AddTestRope(const Vector3d& a, const Vector3d& b, ModelBuilder* builder) {
+  const Material nylon{.youngs_modulus = 3e9, .density = 1140};
+  builder->AddCable({.name = "rope",
+                     .start = a,
+                     .end = b,
+                     .num_elements = 2,
+                     .properties = MakeCableProperties(nylon, MakeCircleSection(0.004))});
+}
+
+/// The contact tests' law: Carvalho–Martins, k = 10⁶, e = 0.4, 5 inspection spheres per element,
+/// with `friction` (none: frictionless) and no targets yet.
+inline ContactSpec MakeTestContactSpec(const std::optional<FrictionLaw>& friction) {
+  ContactSpec spec;
+  spec.normal = MakeDissipativeContactLaw(NormalLawKind::kCarvalhoMartins, 1e6, 0.4);
+  spec.friction = friction;
+  spec.points_per_element = 5;
+  return spec;
+}
 
 /// Q of the contact forces alone at (q, v) (Workspace::internal_force).
 inline VectorXd CalcTargetContactForces(const Model& model, const TargetContact& contact,
