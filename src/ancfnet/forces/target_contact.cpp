@@ -55,7 +55,10 @@ Index CountContactPairs(const Model& model) {
 }
 
 TargetContact::TargetContact(const Model& model)
-    : model_(model), probes_(MakeContactProbes(model)), frames_(model.contact().targets.size()) {}
+    : model_(model),
+      probes_(MakeContactProbes(model)),
+      frames_(model.contact().targets.size()),
+      distance_bounds_(probes_.size() * model.contact().targets.size()) {}
 
 TargetContact::Frame TargetContact::CalcFrame(const ContactTarget& target, const VectorXd& q,
                                               const VectorXd& v) const {
@@ -98,18 +101,22 @@ TargetContact::Axis TargetContact::Locate(const ContactProbe& probe, const Vecto
   return axis;
 }
 
+TargetContact::TargetAxis TargetContact::InTargetFrame(const Frame& frame, const Axis& axis) {
+  if (frame.body < 0) return {axis.x0, axis.x1};
+  // In the body's frame: x_B = R_WBᵀ (x − x_WB).
+  const Matrix3d& R = frame.pose.R_WB;
+  return {R.transpose() * (axis.x0 - frame.pose.p_WB), R.transpose() * (axis.x1 - frame.pose.p_WB)};
+}
+
 TargetContact::ProbePoint TargetContact::FindProbePoint(const ContactTarget& target,
                                                         const Frame& frame,
                                                         const Axis& axis) const {
   ProbePoint point;
-  SegmentTargetDistance d;
-  if (frame.body < 0) {
-    d = CalcSegmentTargetDistance(target, axis.x0, axis.x1);
-  } else {
-    // In the body's frame: x_B = R_WBᵀ (x − x_WB); n = R_WB n_B, ∂n/∂x = R_WB H_B R_WBᵀ.
+  const TargetAxis ends = InTargetFrame(frame, axis);
+  SegmentTargetDistance d = CalcSegmentTargetDistance(target, ends.x0, ends.x1);
+  if (frame.body >= 0) {
+    // n = R_WB n_B, ∂n/∂x = R_WB H_B R_WBᵀ.
     const Matrix3d& R = frame.pose.R_WB;
-    d = CalcSegmentTargetDistance(target, R.transpose() * (axis.x0 - frame.pose.p_WB),
-                                  R.transpose() * (axis.x1 - frame.pose.p_WB));
     d.normal = R * d.normal;
     d.hessian = R * d.hessian * R.transpose();
   }
@@ -119,6 +126,20 @@ TargetContact::ProbePoint TargetContact::FindProbePoint(const ContactTarget& tar
   point.axis = axis.x1 - axis.x0;
   point.axis_rate = axis.v1 - axis.v0;
   point.distance = d;
+  return point;
+}
+
+std::optional<TargetContact::ProbePoint> TargetContact::FindProbePointWithin(
+    std::size_t pair, const ContactTarget& target, const Frame& frame, const Axis& axis,
+    double reach) const {
+  const TargetAxis ends = InTargetFrame(frame, axis);
+  SegmentDistanceBound& bound = distance_bounds_[pair];
+  if (bound.LowerBound(ends.x0, ends.x1) > reach) return std::nullopt;
+  ProbePoint point = FindProbePoint(target, frame, axis);
+  // A capsule's minimum over a mesh is searched on a few intervals and may be a local one: its
+  // distance is no bound, and such pairs are always searched.
+  const bool global_minimum = ends.x0 == ends.x1 || target.kind != ContactTarget::Kind::kMesh;
+  if (global_minimum) bound = {ends.x0, ends.x1, point.distance.distance};
   return point;
 }
 
@@ -216,9 +237,11 @@ void TargetContact::ForEachTouchingPair(const VectorXd& q, const VectorXd& v,
   for (std::size_t p = 0; p < probes_.size(); ++p) {
     const Axis axis = Locate(probes_[p], q, v);
     for (std::size_t t = 0; t < targets.size(); ++t) {
-      const ProbePoint point = FindProbePoint(targets[t], frames_[t], axis);
-      PairForce f = CalcPairForce(frames_[t], probes_[p], point, history[p * targets.size() + t],
-                                  with_jacobian);
+      const std::size_t pair = p * targets.size() + t;
+      const std::optional<ProbePoint> point =
+          FindProbePointWithin(pair, targets[t], frames_[t], axis, probes_[p].radius);
+      if (!point) continue;
+      PairForce f = CalcPairForce(frames_[t], probes_[p], *point, history[pair], with_jacobian);
       if (!f.touching) continue;
       f.target = static_cast<Index>(t);
       visit(probes_[p], f);
@@ -323,19 +346,22 @@ std::string TargetContact::CheckStep(const VectorXd& q_start, const VectorXd& v_
   for (std::size_t t = 0; t < targets.size(); ++t) {
     const Frame start = CalcFrame(targets[t], q_start, v_start);
     const Frame end = CalcFrame(targets[t], q, v);
-    for (const ContactProbe& probe : probes_) {
-      const ProbePoint point = FindProbePoint(targets[t], end, Locate(probe, q, v));
-      const double depth = probe.radius - point.distance.distance;
+    for (std::size_t p = 0; p < probes_.size(); ++p) {
+      const ContactProbe& probe = probes_[p];
+      const std::optional<ProbePoint> point = FindProbePointWithin(
+          p * targets.size() + t, targets[t], end, Locate(probe, q, v), probe.radius);
+      if (!point) continue;
+      const double depth = probe.radius - point->distance.distance;
       const double limit = fraction * probe.radius;
       if (!(depth > limit)) continue;
       const double depth_start =
           probe.radius -
           FindProbePoint(targets[t], start, Locate(probe, q_start, v_start)).distance.distance;
       if (depth - std::max(depth_start, 0.0) <= limit) continue;
-      const std::string where = probe.element >= 0
-                                    ? fmt::format("element {} at ξ = {:.3f}", probe.element,
-                                                  (1.0 - point.t) * probe.xi0 + point.t * probe.xi1)
-                                    : fmt::format("point mass {}", probe.point_mass);
+      const std::string where =
+          probe.element >= 0 ? fmt::format("element {} at ξ = {:.3f}", probe.element,
+                                           (1.0 - point->t) * probe.xi0 + point->t * probe.xi1)
+                             : fmt::format("point mass {}", probe.point_mass);
       return fmt::format(
           "the contact probe of {} sank {:.3g} m into target '{}' in one step (more than {} "
           "of its radius)",

@@ -6,12 +6,14 @@
 /// Jacobians an implicit integrator needs (docs/theory.md, "Contact with rigid targets" and
 /// "Capsule chains against rigid targets").
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "ancfnet/assembly/forces.hpp"
 #include "ancfnet/contact/contact_pair_force.hpp"
 #include "ancfnet/contact/contact_point.hpp"
+#include "ancfnet/contact/segment_distance_bound.hpp"
 #include "ancfnet/contact/target_distance.hpp"
 #include "ancfnet/contact/target_pair_jacobian.hpp"
 #include "ancfnet/model/model.hpp"
@@ -134,6 +136,16 @@ class TargetContact {
   };
   ProbePoint FindProbePoint(const ContactTarget& target, const Frame& frame,
                             const Axis& axis) const;
+  // A probe's axis ends in its target's frame (the world's for a fixed target).
+  struct TargetAxis {
+    Vector3d x0, x1;
+  };
+  static TargetAxis InTargetFrame(const Frame& frame, const Axis& axis);
+  // FindProbePoint for the (probe, target) pair `pair`, or nothing when its distance bound
+  // (distance_bounds_) shows it farther than `reach` (m) from the target; updates the bound.
+  std::optional<ProbePoint> FindProbePointWithin(std::size_t pair, const ContactTarget& target,
+                                                 const Frame& frame, const Axis& axis,
+                                                 double reach) const;
   // Penetration, normal, ∂n/∂x and the probe's velocity relative to the target's surface.
   ContactKinematics CalcKinematics(const Frame& frame, const ContactProbe& probe,
                                    const ProbePoint& point) const;
@@ -154,6 +166,9 @@ class TargetContact {
   const std::vector<Matrix3d>* body_rotation_ = nullptr;
   double step_ = 0.0;
   mutable std::vector<Frame> frames_;  // per target, at the (q, v) being evaluated
+  // Per (probe, target) pair: where it was when its distance was last found, to skip the
+  // distance queries of pairs that cannot touch (SegmentDistanceBound).
+  mutable std::vector<SegmentDistanceBound> distance_bounds_;
 };
 
 }  // namespace ancfnet

@@ -24,7 +24,8 @@ PointSegmentDistance CalcPointSegmentDistance(const Vector3d& p, const Vector3d&
   out.closest_point = a + out.t * ab;
   const Vector3d r = p - out.closest_point;
   out.distance = r.norm();
-  out.direction = NormalizedOr(r, AnyUnitPerpendicular(ab));
+  // The fallback only where needed: it costs more than the rest of the query.
+  out.direction = out.distance > 0.0 ? Vector3d(r / out.distance) : AnyUnitPerpendicular(ab);
   out.gradient << out.direction, -(1.0 - out.t) * out.direction, -out.t * out.direction;
   return out;
 }
