@@ -41,6 +41,7 @@ void ReadDynamicSettings(const YamlMap& map, DynamicSettings* dynamics) {
     if (dynamics->min_time_step > dynamics->time_step)
       v->FailExpected(fmt::format("a number ≤ time_step ({})", dynamics->time_step));
   }
+  if (auto v = map.Find("energy_drift")) dynamics->energy_drift = v->AsNumberIn(0.0, 1.0);
   if (auto v = map.Find("jacobian_update")) {
     dynamics->jacobian_update =
         v->AsEnum<JacobianUpdate>({{"every_iteration", JacobianUpdate::kEveryIteration},
@@ -64,8 +65,8 @@ void ReadDynamicSettings(const YamlMap& map, DynamicSettings* dynamics) {
 AnalysisSettings ReadAnalysisSettings(const YamlValue& analysis) {
   const YamlMap map = analysis.AsMap();
   map.CheckKeys({"type", "load_steps", "max_step_cuts", "line_search", "integrator",
-                 "spectral_radius", "time_step", "end_time", "min_time_step", "jacobian_update",
-                 "max_iterations", "relative_tolerance", "absolute_tolerance",
+                 "spectral_radius", "time_step", "end_time", "min_time_step", "energy_drift",
+                 "jacobian_update", "max_iterations", "relative_tolerance", "absolute_tolerance",
                  "energy_tolerance", "contact_couplings"});
   AnalysisSettings settings;
   settings.type = map.Get("type").AsEnum<AnalysisType>(

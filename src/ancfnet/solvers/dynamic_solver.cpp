@@ -8,6 +8,7 @@
 #include "ancfnet/integrators/explicit_verlet.hpp"
 #include "ancfnet/integrators/generalized_alpha.hpp"
 #include "ancfnet/integrators/implicit_midpoint.hpp"
+#include "ancfnet/solvers/energy_step_control.hpp"
 
 namespace ancfnet {
 namespace {
@@ -38,6 +39,7 @@ SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings, dou
   long output_count = 1;
   double next_output = start + (output_interval > 0.0 ? output_interval : 0.0);
   int accepted_in_a_row = 0;
+  EnergyStepControl energy_control(settings.energy_drift, start, end, energy.account());
   const bool can_fail = CanFail(model);
   while (state->t < end - time_eps) {
     double h = std::min(step, end - state->t);
@@ -79,7 +81,15 @@ SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings, dou
         energy.Release(model, integrator.workspace(), check.released_energy);
       }
     }
-    if (++accepted_in_a_row >= kStepsBeforeGrowth && step < nominal) {
+    const double cut = energy_control.Cut(h, energy.account());
+    if (cut < 1.0) {
+      // A power-of-two fraction of the nominal step, so that the step (and with it the
+      // iteration matrix, which depends on h) changes seldom.
+      step = std::max(nominal * std::exp2(std::floor(std::log2(cut * h / nominal))), min_step);
+      accepted_in_a_row = 0;
+    } else if (!energy_control.may_grow()) {
+      accepted_in_a_row = 0;
+    } else if (++accepted_in_a_row >= kStepsBeforeGrowth && step < nominal) {
       step = std::min(2.0 * step, nominal);
       accepted_in_a_row = 0;
     }

@@ -41,7 +41,10 @@ class NewtonSolver {
   void set_line_search(bool line_search) { line_search_ = line_search; }
 
   /// Marks the stored factorisation as stale (e.g. after a change of time step).
-  void InvalidateJacobian() { jacobian_fresh_ = false; has_factorization_ = false; }
+  void InvalidateJacobian() {
+    jacobian_fresh_ = false;
+    has_factorization_ = false;
+  }
   /// The iteration matrix has a new pattern (contact couplings were added).
   void InvalidatePattern() {
     InvalidateJacobian();
