@@ -55,10 +55,7 @@ std::array<StrainJet, kRawPerPoint> SectionStrains(const BeamLocalVector& u, boo
   shear_and_rate(kD3, kD3x, c3, s[kG3], s[kG3x]);
   s[kK1] = Combine(0.5, DotJet(u, kD3, kD2x, h), -0.5, DotJet(u, kD2, kD3x, h)) * c2 * c3;
   s[kK2] = TripleJet(u, kD2, kD3, kD3x, h) * c2 * c3_sq;
-  s[kK3] = TripleJet(u, kD2, kD3, kD2x, h) * c2_sq * c3;
-  s[kK3].value = -s[kK3].value;
-  s[kK3].grad = -s[kK3].grad;
-  s[kK3].hess = -s[kK3].hess;
+  s[kK3] = TripleJet(u, kD3, kD2, kD2x, h) * c2_sq * c3;  // [d₃, d₂, d₂'] = −[d₂, d₃, d₂']
   return s;
 }
 

@@ -22,11 +22,17 @@ using BeamLocalMatrix = Eigen::Matrix<double, kBeamLocalSize, kBeamLocalSize>;
 /// their derivatives along the axis.
 enum BeamLocalBlock : int { kSlope = 0, kCurvatureVector = 1, kD2 = 2, kD3 = 3, kD2x = 4, kD3x = 5 };
 
-/// A scalar function f(u) with ∇f and, when `with_hessian`, ∇²f.
+/// A scalar function f(u) with ∇f and, when `has_hessian`, ∇²f (otherwise `hess` is left
+/// uninitialised, which saves the force-only path most of its work).
 struct StrainJet {
+  explicit StrainJet(bool with_hessian = false) : has_hessian(with_hessian) {
+    grad.setZero();
+    if (has_hessian) hess.setZero();
+  }
   double value = 0.0;
-  BeamLocalVector grad = BeamLocalVector::Zero();
-  BeamLocalMatrix hess = BeamLocalMatrix::Zero();
+  bool has_hessian;
+  BeamLocalVector grad;
+  BeamLocalMatrix hess;
 };
 
 /// The 3-vector block `b` of u.
@@ -34,7 +40,7 @@ inline Vector3d LocalBlock(const BeamLocalVector& u, int b) { return u.segment<3
 
 /// a·b for blocks a ≠ b: ∇ = [b at a, a at b], ∇² = I at (a, b) and (b, a).
 inline StrainJet DotJet(const BeamLocalVector& u, int a, int b, bool with_hessian) {
-  StrainJet j;
+  StrainJet j(with_hessian);
   const Vector3d ua = LocalBlock(u, a);
   const Vector3d ub = LocalBlock(u, b);
   j.value = ua.dot(ub);
@@ -49,7 +55,7 @@ inline StrainJet DotJet(const BeamLocalVector& u, int a, int b, bool with_hessia
 
 /// ½ (|a|² − 1) for block a: ∇ = a, ∇² = I.
 inline StrainJet HalfStretchJet(const BeamLocalVector& u, int a, bool with_hessian) {
-  StrainJet j;
+  StrainJet j(with_hessian);
   const Vector3d ua = LocalBlock(u, a);
   j.value = 0.5 * (ua.squaredNorm() - 1.0);
   j.grad.segment<3>(3 * a) = ua;
@@ -67,7 +73,7 @@ inline Matrix3d SkewMatrix(const Vector3d& v) {
 /// The triple product a·(b × c) of three distinct blocks: ∇ = [b×c, c×a, a×b],
 /// ∇²: (a,b) = −[c]×, (a,c) = [b]×, (b,c) = −[a]× and their transposes.
 inline StrainJet TripleJet(const BeamLocalVector& u, int a, int b, int c, bool with_hessian) {
-  StrainJet j;
+  StrainJet j(with_hessian);
   const Vector3d ua = LocalBlock(u, a);
   const Vector3d ub = LocalBlock(u, b);
   const Vector3d uc = LocalBlock(u, c);
@@ -90,7 +96,7 @@ inline StrainJet TripleJet(const BeamLocalVector& u, int a, int b, int c, bool w
 /// |a|^(−p) for block a, with g = |a|²: ∇ = −p g^(−p/2−1) a,
 /// ∇² = −p g^(−p/2−1) I + p (p + 2) g^(−p/2−2) a aᵀ.
 inline StrainJet InverseNormPowerJet(const BeamLocalVector& u, int a, int p, bool with_hessian) {
-  StrainJet j;
+  StrainJet j(with_hessian);
   const Vector3d ua = LocalBlock(u, a);
   const double g = ua.squaredNorm();
   j.value = std::pow(g, -0.5 * p);
@@ -105,22 +111,25 @@ inline StrainJet InverseNormPowerJet(const BeamLocalVector& u, int a, int p, boo
 }
 
 /// Product rule: (fg)' = f g' + g f', (fg)'' = f g'' + g f'' + f' g'ᵀ + g' f'ᵀ.
+/// Both factors must have Hessians, or neither.
 inline StrainJet operator*(const StrainJet& f, const StrainJet& g) {
-  StrainJet j;
+  StrainJet j(f.has_hessian);
   j.value = f.value * g.value;
   j.grad = f.value * g.grad + g.value * f.grad;
-  j.hess = f.value * g.hess + g.value * f.hess;
-  j.hess.noalias() += f.grad * g.grad.transpose();
-  j.hess.noalias() += g.grad * f.grad.transpose();
+  if (j.has_hessian) {
+    j.hess = f.value * g.hess + g.value * f.hess;
+    j.hess.noalias() += f.grad * g.grad.transpose();
+    j.hess.noalias() += g.grad * f.grad.transpose();
+  }
   return j;
 }
 
 /// Linear combination a f + b g.
 inline StrainJet Combine(double a, const StrainJet& f, double b, const StrainJet& g) {
-  StrainJet j;
+  StrainJet j(f.has_hessian);
   j.value = a * f.value + b * g.value;
   j.grad = a * f.grad + b * g.grad;
-  j.hess = a * f.hess + b * g.hess;
+  if (j.has_hessian) j.hess = a * f.hess + b * g.hess;
   return j;
 }
 
