@@ -23,8 +23,7 @@ struct BeamElementCase {
 // and stretched by 1 %, its section sheared by 0.02 rad.
 BeamElementCase MakeBeamElementCase() {
   const BeamMaterial steel{.youngs_modulus = 2.07e11, .poisson_ratio = 0.3, .density = 7800.0};
-  BeamElementCase c{MakeBeamElementParameters(steel, MakeRectangleBeamSection(0.5, 0.1, 0.3),
-                                              0.25),
+  BeamElementCase c{MakeBeamElementParameters(steel, MakeRectangleBeamSection(0.5, 0.1, 0.3), 0.25),
                     Vector24d::Zero()};
   const Matrix3d turn =
       Eigen::AngleAxisd(0.3, Vector3d(0.2, 0.5, 1.0).normalized()).toRotationMatrix();

@@ -79,8 +79,8 @@ std::vector<Mode> CalcModes() {
       amount[kTorsion] +=
           std::pow(shape[BeamDof(node, 2, 2)], 2) + std::pow(shape[BeamDof(node, 3, 1)], 2);
     }
-    const auto kind = static_cast<ModeKind>(
-        std::max_element(amount.begin(), amount.end()) - amount.begin());
+    const auto kind =
+        static_cast<ModeKind>(std::max_element(amount.begin(), amount.end()) - amount.begin());
     modes.push_back({std::sqrt(eig.eigenvalues()[i]), kind});
   }
   return modes;
@@ -115,12 +115,12 @@ TEST(AncfBeamFrequencies, SimplySupportedBeamAgainstClosedForms) {
   ASSERT_EQ(bending_y.size(), 3u);
   ASSERT_EQ(bending_z.size(), 3u);
   for (int j = 1; j <= 3; ++j) {
-    const double y = TimoshenkoPinnedPinned(j, e * s.second_moment_z,
-                                            s.shear_correction_y * g * s.area, rho * s.area,
-                                            rho * s.second_moment_z);
-    const double z = TimoshenkoPinnedPinned(j, e * s.second_moment_y,
-                                            s.shear_correction_z * g * s.area, rho * s.area,
-                                            rho * s.second_moment_y);
+    const double y =
+        TimoshenkoPinnedPinned(j, e * s.second_moment_z, s.shear_correction_y * g * s.area,
+                               rho * s.area, rho * s.second_moment_z);
+    const double z =
+        TimoshenkoPinnedPinned(j, e * s.second_moment_y, s.shear_correction_z * g * s.area,
+                               rho * s.area, rho * s.second_moment_y);
     EXPECT_NEAR(bending_y[j - 1], y, 3e-3 * y) << "bending in y, mode " << j;
     EXPECT_NEAR(bending_z[j - 1], z, 3e-3 * z) << "bending in z, mode " << j;
   }
@@ -130,9 +130,9 @@ TEST(AncfBeamFrequencies, SimplySupportedBeamAgainstClosedForms) {
   ASSERT_EQ(torsion.size(), 2u);
   for (int j = 1; j <= 2; ++j) {
     const double rod = (2 * j - 1) * pi / (2.0 * kLength) * std::sqrt(e / rho);
-    const double twist = j * pi / kLength *
-                         std::sqrt(g * s.torsion_constant /
-                                   (rho * (s.second_moment_y + s.second_moment_z)));
+    const double twist =
+        j * pi / kLength *
+        std::sqrt(g * s.torsion_constant / (rho * (s.second_moment_y + s.second_moment_z)));
     EXPECT_NEAR(axial[j - 1], rod, 3e-3 * rod) << "axial mode " << j;
     EXPECT_NEAR(torsion[j - 1], twist, 3e-3 * twist) << "torsion mode " << j;
   }

@@ -123,13 +123,13 @@ TEST(AncfBeamStatics, PrincetonBeamWeakDirectionTipDisplacement) {
       const double beta = i * 15.0 * std::numbers::pi / 180.0;
       BeamChain chain = test::MakeStraightBeamChain(aluminium, section, 0.508, elements);
       const double fy = -c.force * std::cos(beta), fz = c.force * std::sin(beta);
-      test::SolveBeamStatics(chain, test::ClampFirstNode(),
-                             [&](const VectorXd&, double lambda, VectorXd& f,
-                                 std::vector<Eigen::Triplet<double>>&) {
-                               f[BeamDof(elements, 0, 1)] += lambda * fy;
-                               f[BeamDof(elements, 0, 2)] += lambda * fz;
-                             },
-                             10);
+      test::SolveBeamStatics(
+          chain, test::ClampFirstNode(),
+          [&](const VectorXd&, double lambda, VectorXd& f, std::vector<Eigen::Triplet<double>>&) {
+            f[BeamDof(elements, 0, 1)] += lambda * fy;
+            f[BeamDof(elements, 0, 2)] += lambda * fz;
+          },
+          10);
       EXPECT_NEAR(chain.q[BeamDof(elements, 0, 2)], c.weak[i], 0.01 * c.weak[i])
           << "F = " << c.force << " N, beta = " << 15 * i << " deg";
     }

@@ -41,15 +41,13 @@ std::array<StrainJet, kRawPerPoint> SectionStrains(const BeamLocalVector& u, boo
   const StrainJet c2_sq = InverseNormPowerJet(u, kD2, 2, h);
   const StrainJet c3_sq = InverseNormPowerJet(u, kD3, 2, h);
   std::array<StrainJet, kRawPerPoint> s;
-  const auto shear_and_rate = [&](int d, int dx, const StrainJet& c, StrainJet& g,
-                                  StrainJet& g_x) {
+  const auto shear_and_rate = [&](int d, int dx, const StrainJet& c, StrainJet& g, StrainJet& g_x) {
     const StrainJet t_d = DotJet(u, kSlope, d, h);
     g = t_d * c;
     // (r'·d/|d|)' = (r''·d + r'·d') /|d| − (r'·d)(d·d') /|d|³
-    const StrainJet rate = Combine(1.0, DotJet(u, kCurvatureVector, d, h), 1.0,
-                                   DotJet(u, kSlope, dx, h));
-    g_x = Combine(1.0, rate * c, -1.0,
-                  t_d * DotJet(u, d, dx, h) * InverseNormPowerJet(u, d, 3, h));
+    const StrainJet rate =
+        Combine(1.0, DotJet(u, kCurvatureVector, d, h), 1.0, DotJet(u, kSlope, dx, h));
+    g_x = Combine(1.0, rate * c, -1.0, t_d * DotJet(u, d, dx, h) * InverseNormPowerJet(u, d, 3, h));
   };
   shear_and_rate(kD2, kD2x, c2, s[kG2], s[kG2x]);
   shear_and_rate(kD3, kD3x, c3, s[kG3], s[kG3x]);
@@ -91,8 +89,8 @@ RawMatrix SectionEnergyMatrix(const BeamElementParameters& p) {
     a(row + 6, kG2) = 1.0 / dx;
     a(row + 6, kRawPerPoint + kG2) = -1.0 / dx;
     wd.segment<kGeneralisedPerPoint>(row) << p.shear_stiffness_y, p.shear_stiffness_z,
-        p.torsional_stiffness, p.bending_stiffness_y, p.bending_stiffness_z,
-        p.bending_stiffness_y, p.bending_stiffness_z;
+        p.torsional_stiffness, p.bending_stiffness_y, p.bending_stiffness_z, p.bending_stiffness_y,
+        p.bending_stiffness_z;
     wd.segment<kGeneralisedPerPoint>(row) *= rule.weights[k] * p.length;
   }
   return a.transpose() * wd.asDiagonal() * a;

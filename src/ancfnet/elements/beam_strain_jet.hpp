@@ -20,7 +20,14 @@ using BeamLocalMatrix = Eigen::Matrix<double, kBeamLocalSize, kBeamLocalSize>;
 
 /// The 3-vector blocks of u: r' (the axial slope), r'', the directors d₂ = r_y and d₃ = r_z, and
 /// their derivatives along the axis.
-enum BeamLocalBlock : int { kSlope = 0, kCurvatureVector = 1, kD2 = 2, kD3 = 3, kD2x = 4, kD3x = 5 };
+enum BeamLocalBlock : int {
+  kSlope = 0,
+  kCurvatureVector = 1,
+  kD2 = 2,
+  kD3 = 3,
+  kD2x = 4,
+  kD3x = 5
+};
 
 /// A scalar function f(u) with ∇f and, when `has_hessian`, ∇²f (otherwise `hess` is left
 /// uninitialised, which saves the force-only path most of its work).

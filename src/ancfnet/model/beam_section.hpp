@@ -11,10 +11,10 @@ namespace ancfnet {
 /// Geometric properties of a beam cross-section in its principal axes (y along d₂, z along d₃),
 /// centroid on the beam axis. SI.
 struct BeamSection {
-  double area = 0.0;               ///< A (m²), > 0
-  double second_moment_y = 0.0;    ///< I_y = ∫ z² dA (m⁴), > 0
-  double second_moment_z = 0.0;    ///< I_z = ∫ y² dA (m⁴), > 0
-  double torsion_constant = 0.0;   ///< Saint-Venant J (m⁴), > 0 (not the polar moment)
+  double area = 0.0;                ///< A (m²), > 0
+  double second_moment_y = 0.0;     ///< I_y = ∫ z² dA (m⁴), > 0
+  double second_moment_z = 0.0;     ///< I_z = ∫ y² dA (m⁴), > 0
+  double torsion_constant = 0.0;    ///< Saint-Venant J (m⁴), > 0 (not the polar moment)
   double shear_correction_y = 0.0;  ///< k_y for shear along y, in (0, 1]
   double shear_correction_z = 0.0;  ///< k_z for shear along z, in (0, 1]
 };
