@@ -6,6 +6,8 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
+#include "ancfnet/elements/hermite_shape.hpp"
+
 namespace ancfnet {
 namespace {
 
@@ -130,6 +132,21 @@ TEST(AncfBeam, ConstantCurvatureStoresBendingEnergy) {
       end, t_end, Vector3d::UnitZ().cross(t_end), Vector3d::UnitZ();
   const double expected = 0.5 * p.bending_stiffness_z * kappa * kappa * p.length;
   EXPECT_NEAR(CalcBeamStrainEnergy(p, e), expected, 1e-3 * expected);
+}
+
+TEST(AncfBeam, AxisIsInterpolatedLikeTheCableFromTheFirstSixNodalCoordinates) {
+  // A beam node's (r, r_x) are a cable node's (r, r'): both elements share the centre line, so
+  // a mesh can join them through those coordinates.
+  constexpr int kAxisBlocks[4] = {0, 1, 4, 5};
+  for (const double xi : {0.0, 0.2113, 0.5, 0.9}) {
+    const BeamLocalMap map = MakeBeamLocalMap(xi, 0.7);
+    const HermiteShape cable = CalcHermiteShape(xi, 0.7);
+    for (int i = 0; i < 4; ++i) {
+      EXPECT_EQ(map.position[kAxisBlocks[i]], cable.s[i]);
+      EXPECT_EQ(map.b(kSlope, kAxisBlocks[i]), cable.ds[i]);
+      EXPECT_EQ(map.b(kCurvatureVector, kAxisBlocks[i]), cable.dds[i]);
+    }
+  }
 }
 
 TEST(AncfBeam, MassMatrixGivesMassAndRotaryInertiaOfRigidMotions) {
