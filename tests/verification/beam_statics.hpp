@@ -42,7 +42,7 @@ using BeamLoad = std::function<void(const VectorXd& q, double lambda, VectorXd& 
 
 // Solves F_int(q) = λ f(q) for λ = 1/steps, 2/steps, …, 1 by Newton's method with the
 // coordinates listed in `fixed` held at their reference values. Throws if a step fails to
-// converge to |ΔQ| ≤ 1e-10 |q|.
+// converge to |Δq| ≤ 1e-10 |q| in 30 iterations.
 inline void SolveBeamStatics(BeamChain& chain, const std::vector<int>& fixed, const BeamLoad& load,
                              int steps) {
   const Index n = chain.q.size();
