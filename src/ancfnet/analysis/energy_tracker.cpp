@@ -22,7 +22,7 @@ double CalcStrainEnergy(const Model& model, const Workspace& ws, const VectorXd&
   for (const CableElement& element : model.elements())
     energy += CalcCableStrainEnergy(element.parameters, model.Gather(element, q));
   return energy + CalcLinkEnergy(model, ws, q) + CalcAttachmentEnergy(model, ws, q) +
-         ws.contact_energy;
+         ws.contact_energy + ws.joint_energy;
 }
 
 EnergyTracker::EnergyTracker(const Model& model, const Workspace& ws, const State& state,

@@ -13,7 +13,8 @@ namespace ancfnet {
 double CalcKineticEnergy(const Model& model, const Workspace& ws, const VectorXd& v);
 /// Strain energy Σ U_e(q) of the cable elements plus the energy stored in the intact links, the
 /// body attachments (with the reference orientations in ws.body_rotation) and,
-/// as last evaluated into ws.contact_energy, in the contacts (J).
+/// as last evaluated into ws.contact_energy and ws.joint_energy, in the contacts and the clearance
+/// joints (J).
 double CalcStrainEnergy(const Model& model, const Workspace& ws, const VectorXd& q);
 
 /// How a step's work W and dissipation D are integrated (docs/theory.md, "Energy accounting"):
