@@ -20,9 +20,9 @@
 namespace ancfnet {
 namespace {
 
-constexpr double kClearance = 1e-3;       // c (m)
-constexpr double kJournalRadius = 0.02;   // R_J (m)
-constexpr double kMass = 1.0;             // the journal's (kg)
+constexpr double kClearance = 1e-3;      // c (m)
+constexpr double kJournalRadius = 0.02;  // R_J (m)
+constexpr double kMass = 1.0;            // the journal's (kg)
 
 RigidBodySpec Journal(const Vector3d& velocity, const Vector3d& angular_velocity) {
   return {.name = "journal",
@@ -69,8 +69,7 @@ JointRun Simulate(const Model& model, IntegratorType integrator, double h, doubl
       [&](const State& s, const EnergyAccount& e) {
         if (first) balance0 = e.Balance(), run.energy0 = e.kinetic + e.strain, first = false;
         run.max_balance_error = std::max(run.max_balance_error, std::abs(e.Balance() - balance0));
-        run.last = CalcClearanceJointState(model, 0, s.q, s.v, s.body_rotation,
-                                           s.joint_history[0]);
+        run.last = CalcClearanceJointState(model, 0, s.q, s.v, s.body_rotation, s.joint_history[0]);
         const bool now = run.last.contact.touching;
         if (now && !touching) ++run.impacts;
         if (now && run.impacts == 1)
@@ -111,10 +110,11 @@ TEST(ClearanceJoint, LoadedJournalSettlesWhereTheLawBalancesTheLoad) {
   const JointRun run = Simulate(model, IntegratorType::kImplicitMidpoint, 2e-5, 0.3);
   const double expected = std::pow(kMass * 9.81 / k, 1.0 / 1.5);
   const ClearanceContact& c = run.last.contact;
-  std::printf("loaded journal: %d impacts, δ = %.6e m (expected %.6e), F_n = %.6f N, energy "
-              "error %.2e of the dissipated %.3e J\n",
-              run.impacts, c.penetration, expected, c.normal_force,
-              run.max_balance_error / run.energy0, run.energy0);
+  std::printf(
+      "loaded journal: %d impacts, δ = %.6e m (expected %.6e), F_n = %.6f N, energy "
+      "error %.2e of the dissipated %.3e J\n",
+      run.impacts, c.penetration, expected, c.normal_force, run.max_balance_error / run.energy0,
+      run.energy0);
   ASSERT_TRUE(c.touching);
   EXPECT_EQ(run.last.mode, ClearanceMode::kContact);
   EXPECT_NEAR(c.penetration, expected, 1e-3 * expected);
@@ -153,9 +153,10 @@ TEST(ClearanceJoint, FrictionMomentOfASpinningJournalIsMuNR) {
   const double moment = mu * normal * kJournalRadius;
   // The bearing below the journal, turned towards the slip by the friction angle.
   const double angle = std::atan2(-c.eccentricity.x(), c.eccentricity.y());
-  std::printf("spinning journal: N = %.6f N (expected %.6f), M = %.6e N m (expected %.6e), "
-              "angle %.5f rad (atan μ = %.5f)\n",
-              c.normal_force, normal, c.journal_moment.z(), -moment, angle, std::atan(mu));
+  std::printf(
+      "spinning journal: N = %.6f N (expected %.6f), M = %.6e N m (expected %.6e), "
+      "angle %.5f rad (atan μ = %.5f)\n",
+      c.normal_force, normal, c.journal_moment.z(), -moment, angle, std::atan(mu));
   EXPECT_NEAR(c.normal_force, normal, 1e-2 * normal);
   // Friction on the journal opposes its spin: M_z = −μ N R_J.
   EXPECT_NEAR(c.journal_moment.z(), -moment, 1e-2 * moment);

@@ -9,23 +9,26 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 #include <vector>
 
+#include "ancfnet/joints/clearance_joint_forces.hpp"
 #include "ancfnet/model/model_builder.hpp"
 #include "ancfnet/solvers/dynamic_solver.hpp"
 
 namespace ancfnet {
 namespace {
 
-constexpr double kCrank = 0.05;  // r (m)
-constexpr double kRod = 0.12;    // l (m)
+constexpr double kCrank = 0.05;                                    // r (m)
+constexpr double kRod = 0.12;                                      // l (m)
 constexpr double kOmega = 5000.0 * 2.0 * std::numbers::pi / 60.0;  // rad/s
-constexpr double kPeriod = 2.0 * std::numbers::pi / kOmega;          // s
+constexpr double kPeriod = 2.0 * std::numbers::pi / kOmega;        // s
 
-Model MakeSliderCrank(double clearance) {
+// Lankarani–Nikravesh joints of stiffness k (N/m^1.5), e = 0.5.
+Model MakeSliderCrank(double clearance, double stiffness = 1e10) {
   ModelBuilder builder;
   builder.AddRigidBody({.name = "crank",
                         .mass = 0.30,
@@ -49,17 +52,18 @@ Model MakeSliderCrank(double clearance) {
                     .properties = MakeCableProperties(steel, MakeRectangleSection(0.03, 0.03))});
   for (double s : {0.0, 1.0})
     builder.FixCoordinates({"slider", s}, {false, true, true, true, true, true});
-  const NormalLaw law = MakeDissipativeContactLaw(NormalLawKind::kLankaraniNikravesh, 1e10, 0.5);
+  const NormalLaw law =
+      MakeDissipativeContactLaw(NormalLawKind::kLankaraniNikravesh, stiffness, 0.5);
   const auto joint = [&](const char* name, double c, const JointAnchorSpec& bearing,
                          const Vector3d& at) {
-    builder.AddClearanceJoint({.name = name,
-                               .type = ClearanceJoint::Type::kRevolute,
-                               .journal = {.kind = JointAnchor::Kind::kBody, .name = "rod",
-                                           .position = at},
-                               .bearing = bearing,
-                               .clearance = c,
-                               .journal_radius = 0.01,
-                               .normal = law});
+    builder.AddClearanceJoint(
+        {.name = name,
+         .type = ClearanceJoint::Type::kRevolute,
+         .journal = {.kind = JointAnchor::Kind::kBody, .name = "rod", .position = at},
+         .bearing = bearing,
+         .clearance = c,
+         .journal_radius = 0.01,
+         .normal = law});
   };
   joint("crank_pin", 1e-6,
         {.kind = JointAnchor::Kind::kBody, .name = "crank", .position = Vector3d(kCrank, 0, 0)},
@@ -89,7 +93,8 @@ SliderAcceleration RunSliderCrank(double clearance) {
       model, settings, 0.0,
       [&](const State& s, const EnergyAccount&) {
         const double a = 0.5 * (s.a[first] + s.a[second]);
-        if (std::abs(s.t - 2.0 * kPeriod) < best_0) best_0 = std::abs(s.t - 2.0 * kPeriod), out.at_0 = a;
+        if (std::abs(s.t - 2.0 * kPeriod) < best_0)
+          best_0 = std::abs(s.t - 2.0 * kPeriod), out.at_0 = a;
         if (std::abs(s.t - 2.5 * kPeriod) < best_pi)
           best_pi = std::abs(s.t - 2.5 * kPeriod), out.at_pi = a;
       },
@@ -106,13 +111,45 @@ TEST(SliderCrankClearance, SliderAccelerationTendsToTheIdealAsTheClearanceVanish
     const SliderAcceleration a = RunSliderCrank(c);
     const double error =
         std::max(std::abs(a.at_0 / ideal_0 - 1.0), std::abs(a.at_pi / ideal_pi - 1.0));
-    std::printf("c = %.0e m: slider acceleration %.1f m/s² at θ = 0 (ideal %.1f), %.1f at θ = π "
-                "(ideal %.1f), largest relative error %.2e\n",
-                c, a.at_0, ideal_0, a.at_pi, ideal_pi, error);
+    std::printf(
+        "c = %.0e m: slider acceleration %.1f m/s² at θ = 0 (ideal %.1f), %.1f at θ = π "
+        "(ideal %.1f), largest relative error %.2e\n",
+        c, a.at_0, ideal_0, a.at_pi, ideal_pi, error);
     errors.push_back(error);
   }
-  EXPECT_LT(errors.back(), 2e-2);
-  EXPECT_LE(errors.back(), errors.front());
+  // Measured: 8.1 %, 0.13 %, 0.13 % (the rest is the joints' contact compliance, δ ≈ 40 µm).
+  EXPECT_GT(errors[0], errors[1]);
+  EXPECT_LT(errors[1], 5e-3);
+  EXPECT_LT(errors[2], 5e-3);
+}
+
+TEST(SliderCrankClearance, WithHalfAMillimetreTheJournalStaysInItsClearanceCircle) {
+  // Flores & Ambrósio's clearance, c = 0.5 mm, steel joints (k = 10¹¹ N/m^1.5): the journal flies
+  // and strikes, and its orbit stays inside the circle of radius c up to a penetration below c/6.
+  const double c = 0.5e-3;
+  const Model model = MakeSliderCrank(c, 1e11);
+  DynamicSettings settings;
+  settings.time_step = kPeriod / 2400.0;
+  settings.end_time = 2.0 * kPeriod;
+  settings.spectral_radius = 0.6;
+  State state = MakeInitialState(model);
+  double max_penetration = 0.0;
+  int impacts = 0;
+  bool touching = false;
+  const SolveResult result = SolveDynamic(
+      model, settings, 0.0,
+      [&](const State& s, const EnergyAccount&) {
+        const ClearanceJointState joint =
+            CalcClearanceJointState(model, 1, s.q, s.v, s.body_rotation, s.joint_history[1]);
+        max_penetration = std::max(max_penetration, joint.contact.penetration);
+        if (joint.contact.touching && !touching) ++impacts;
+        touching = joint.contact.touching;
+      },
+      &state);
+  EXPECT_TRUE(result.completed) << result.message;
+  std::printf("c = 0.5 mm: %d impacts, largest penetration %.3e m\n", impacts, max_penetration);
+  EXPECT_GE(impacts, 2);
+  EXPECT_LT(max_penetration, 0.15 * c);
 }
 
 }  // namespace

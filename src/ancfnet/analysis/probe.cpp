@@ -48,9 +48,14 @@ std::vector<std::string> ProbeColumns(const Probe& probe) {
               n + ".mz",
               n + ".max_penetration"};
     case ProbeQuantity::kClearanceJoint:
-      return {n + ".ex",           n + ".ey",           n + ".ez",
-              n + ".penetration",  n + ".normal_force", n + ".friction_force",
-              n + ".friction_moment", n + ".mode"};
+      return {n + ".ex",
+              n + ".ey",
+              n + ".ez",
+              n + ".penetration",
+              n + ".normal_force",
+              n + ".friction_force",
+              n + ".friction_moment",
+              n + ".mode"};
   }
   return {};
 }

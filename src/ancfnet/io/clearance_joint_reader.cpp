@@ -47,8 +47,8 @@ void ReadClearanceJoint(const YamlValue& item,
     map.CheckKeys({"name", "type", "journal", "bearing", "clearance", "journal_radius", "axis",
                    "contact", "friction"});
   } else {
-    map.CheckKeys({"name", "type", "journal", "bearing", "clearance", "journal_radius",
-                   "contact", "friction"});
+    map.CheckKeys({"name", "type", "journal", "bearing", "clearance", "journal_radius", "contact",
+                   "friction"});
   }
   const YamlValue journal = map.Get("journal");
   const YamlValue bearing = map.Get("bearing");
@@ -77,8 +77,9 @@ void ReadClearanceJoint(const YamlValue& item,
     builder->AddClearanceJoint(spec);
   } catch (const InputError& error) {
     const std::string message = error.what();
-    (message.rfind("bearing", 0) == 0 ? bearing : message.rfind("journal", 0) == 0 ? journal
-                                                                                    : item)
+    (message.rfind("bearing", 0) == 0   ? bearing
+     : message.rfind("journal", 0) == 0 ? journal
+                                        : item)
         .Fail(message);
   }
 }

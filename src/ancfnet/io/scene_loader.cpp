@@ -347,8 +347,8 @@ Scene ReadScene(const YamlValue& root, const std::filesystem::path& scene_direct
     root.FailPlain("the scene is empty (expected a map with materials, sections and cables)");
   const YamlMap scene = root.AsMap();
   scene.CheckKeys({"gravity", "orbital_frame", "materials", "sections", "point_masses", "nets",
-                   "cables", "bodies", "attachments", "joints", "spring_dampers", "constraints", "loads",
-                   "damping", "contact", "probes", "analysis", "output"});
+                   "cables", "bodies", "attachments", "joints", "spring_dampers", "constraints",
+                   "loads", "damping", "contact", "probes", "analysis", "output"});
   ModelBuilder builder;
   if (auto v = scene.Find("gravity")) {
     const Vector3d gravity = v->AsVector3();

@@ -36,8 +36,7 @@ Vector3d InitialCenter(const Model& model, const JointAnchor& anchor) {
 JointAnchor ResolveNamedAnchor(const Model& model, const JointAnchorSpec& spec) {
   JointAnchor anchor;
   anchor.kind = spec.kind;
-  if (spec.position && !spec.position->allFinite())
-    throw InputError("the position must be finite");
+  if (spec.position && !spec.position->allFinite()) throw InputError("the position must be finite");
   if (spec.kind == JointAnchor::Kind::kBody) {
     anchor.body = model.FindRigidBody(spec.name);
     if (anchor.body < 0) throw InputError(fmt::format("no rigid body named '{}'", spec.name));
@@ -52,8 +51,8 @@ JointAnchor ResolveNamedAnchor(const Model& model, const JointAnchorSpec& spec) 
     anchor.weight = point.weight;
     if (model.FindPointMass(spec.name) < 0) {
       const MaterialPoint material = model.LocateCablePoint(model.FindCable(spec.name), spec.s);
-      const HermiteShape shape = CalcHermiteShape(
-          material.xi, model.elements()[material.element].parameters.length);
+      const HermiteShape shape =
+          CalcHermiteShape(material.xi, model.elements()[material.element].parameters.length);
       anchor.has_slope = true;
       for (int k = 0; k < 4; ++k) anchor.slope_weight[k] = shape.ds[k];
     }
@@ -80,9 +79,9 @@ void ModelBuilder::AddClearanceJoint(const ClearanceJointSpec& spec) {
   if (!(spec.clearance > 0.0) || !std::isfinite(spec.clearance))
     throw InputError(fmt::format("clearance must be positive and finite (got {})", spec.clearance));
   if (!(spec.journal_radius > spec.clearance) || !std::isfinite(spec.journal_radius))
-    throw InputError(fmt::format(
-        "journal radius must be finite and larger than the clearance {} (got {})", spec.clearance,
-        spec.journal_radius));
+    throw InputError(
+        fmt::format("journal radius must be finite and larger than the clearance {} (got {})",
+                    spec.clearance, spec.journal_radius));
   if (!spec.axis.allFinite() || !(spec.axis.norm() > 0.0))
     throw InputError("the joint axis must be a finite, non-zero vector");
   if (spec.journal.kind == JointAnchor::Kind::kGround &&
@@ -92,7 +91,8 @@ void ModelBuilder::AddClearanceJoint(const ClearanceJointSpec& spec) {
   if (spec.friction) {
     ValidateFrictionLaw(*spec.friction);
     if (spec.friction->kind == FrictionLawKind::kLuGre)
-      throw InputError("clearance joints take a regularised friction law (tanh, ambrosio), not lugre");
+      throw InputError(
+          "clearance joints take a regularised friction law (tanh, ambrosio), not lugre");
   }
   ClearanceJoint joint{.name = spec.name,
                        .type = spec.type,
@@ -104,9 +104,8 @@ void ModelBuilder::AddClearanceJoint(const ClearanceJointSpec& spec) {
                        .normal = spec.normal,
                        .friction = spec.friction};
   // The ground sits where it is put, or concentric with the other side.
-  for (auto [anchor, given, other] :
-       {std::tuple{&joint.journal, &spec.journal, &joint.bearing},
-        std::tuple{&joint.bearing, &spec.bearing, &joint.journal}})
+  for (auto [anchor, given, other] : {std::tuple{&joint.journal, &spec.journal, &joint.bearing},
+                                      std::tuple{&joint.bearing, &spec.bearing, &joint.journal}})
     if (anchor->kind == JointAnchor::Kind::kGround)
       anchor->ground_point = given->position ? *given->position : InitialCenter(model_, *other);
   model_.clearance_joints_.push_back(joint);

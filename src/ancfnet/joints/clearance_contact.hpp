@@ -26,12 +26,11 @@ using Matrix9x3d = Eigen::Matrix<double, 9, 3>;
 /// revolute joint whose centres are offset along the axis, that offset's couple).
 struct ClearanceContact {
   bool touching = false;
-  Vector3d eccentricity = Vector3d::Zero();  ///< e (m)
-  Vector3d normal = Vector3d::UnitX();       ///< n = e/|e| (outward from the bearing's centre)
-  double penetration = 0.0;                  ///< δ = |e| − c (m); < 0 in free flight
-  double rate = 0.0;                         ///< δ̇ = n·u (m/s), > 0 approaching
-  double normal_force = 0.0;                 ///< F_n (N)
-  double energy = 0.0;                       ///< ∫ F_elastic dδ (J)
+  Vector3d eccentricity = Vector3d::Zero();    ///< e (m)
+  Vector3d normal = Vector3d::UnitX();         ///< n = e/|e| (outward from the bearing's centre)
+  double penetration = 0.0;                    ///< δ = |e| − c (m); < 0 in free flight
+  double rate = 0.0;                           ///< δ̇ = n·u (m/s), > 0 approaching
+  double normal_force = 0.0;                   ///< F_n (N)
   Vector3d force = Vector3d::Zero();           ///< f on the journal (N)
   Vector3d friction = Vector3d::Zero();        ///< f_t (N)
   Vector3d journal_moment = Vector3d::Zero();  ///< m_J about c_J (N m)
@@ -46,6 +45,10 @@ struct ClearanceContact {
   Matrix9x3d d_journal_omega = Matrix9x3d::Zero();
   Matrix9x3d d_bearing_omega = Matrix9x3d::Zero();
 };
+
+/// The eccentricity e = P (c_J − c_B) of the journal's centre c_J relative to the bearing's c_B.
+Vector3d CalcEccentricity(const ClearanceJoint& joint, const Vector3d& journal_center,
+                          const Vector3d& bearing_center);
 
 /// The contact of `joint` with journal and bearing moving as given; `approach_speed` is the v₀
 /// of its normal law (ContactPairHistory::speed). Not touching (δ ≤ 0): no force.

@@ -40,9 +40,14 @@ ClearanceJointState CalcClearanceJointState(const Model& model, Index j, const V
                                             bool with_jacobian = false);
 
 /// ws.internal_force −= Q and ws.viscous_force −= Q_dissipative of every joint, with the bodies'
-/// rotations and the joints' histories in ws; ws.joint_energy = Σ ∫ F_elastic dδ.
+/// rotations and the joints' histories in ws.
 void AddClearanceJointForces(const Model& model, const VectorXd& q, const VectorXd& v,
                              Workspace& ws);
+
+/// Elastic energy stored in the joints at q, Σ ∫₀^δ F_elastic dδ (J), with the bodies' reference
+/// rotations `rotation`.
+double CalcClearanceJointEnergy(const Model& model, const VectorXd& q,
+                                const std::vector<Matrix3d>& rotation);
 
 /// matrix −= c_K ∂Q/∂q + c_C ∂Q/∂q̇ of every joint (SystemMatrix::AddClearanceJointBlock).
 void AddClearanceJointJacobians(const Model& model, const VectorXd& q, const VectorXd& v,

@@ -26,8 +26,8 @@ struct ClearanceJointSpec {
   ClearanceJoint::Type type = ClearanceJoint::Type::kRevolute;
   JointAnchorSpec journal = {};
   JointAnchorSpec bearing = {};
-  double clearance = 0.0;       ///< c (m), > 0
-  double journal_radius = 0.0;  ///< R_J (m), > c
+  double clearance = 0.0;             ///< c (m), > 0
+  double journal_radius = 0.0;        ///< R_J (m), > c
   Vector3d axis = Vector3d::UnitZ();  ///< kRevolute: non-zero (normalised when added)
   NormalLaw normal = {};
   std::optional<FrictionLaw> friction = std::nullopt;  ///< regularised (Ambrósio, tanh) only

@@ -16,13 +16,29 @@ Matrix3d AnchorMotion::GeometricStiffness(int k, int l, const Vector3d& f,
   return Matrix3d::Zero();
 }
 
+Vector3d CalcAnchorCenter(const Model& model, const JointAnchor& anchor, const VectorXd& q,
+                          const std::vector<Matrix3d>& rotation) {
+  switch (anchor.kind) {
+    case JointAnchor::Kind::kGround:
+      return anchor.ground_point;
+    case JointAnchor::Kind::kBody:
+      return CalcBodyPose(model.rigid_bodies()[anchor.body], q, rotation[anchor.body])
+          .PointInWorld(anchor.body_point);
+    case JointAnchor::Kind::kPoint:
+      break;
+  }
+  Vector3d c = Vector3d::Zero();
+  for (int k = 0; k < anchor.num_blocks; ++k) c += anchor.weight[k] * q.segment<3>(anchor.dof[k]);
+  return c;
+}
+
 AnchorMotion CalcAnchorMotion(const Model& model, const JointAnchor& anchor, const VectorXd& q,
                               const VectorXd& v, const std::vector<Matrix3d>& rotation) {
   AnchorMotion out;
   out.kind = anchor.kind;
   switch (anchor.kind) {
     case JointAnchor::Kind::kGround:
-      out.center = anchor.ground_point;
+      out.center = CalcAnchorCenter(model, anchor, q, rotation);
       return out;
     case JointAnchor::Kind::kBody: {
       const RigidBody& body = model.rigid_bodies()[anchor.body];
@@ -34,7 +50,7 @@ AnchorMotion CalcAnchorMotion(const Model& model, const JointAnchor& anchor, con
       out.dof = {body.position_dof(), body.rotation_dof()};
       out.rotation = R;
       out.body_point = s;
-      out.center = pose.PointInWorld(s);
+      out.center = CalcAnchorCenter(model, anchor, q, rotation);
       out.velocity = velocity.v_WB + R * velocity.w_B.cross(s);
       out.angular_velocity = R * velocity.w_B;
       out.a = {Matrix3d::Identity(), -R * Skew(s)};
@@ -51,9 +67,9 @@ AnchorMotion CalcAnchorMotion(const Model& model, const JointAnchor& anchor, con
   out.dof = anchor.dof;
   out.has_slope = anchor.has_slope;
   out.slope_weight = anchor.slope_weight;
+  out.center = CalcAnchorCenter(model, anchor, q, rotation);
   Vector3d slope_rate = Vector3d::Zero();
   for (int k = 0; k < anchor.num_blocks; ++k) {
-    out.center += anchor.weight[k] * q.segment<3>(anchor.dof[k]);
     out.velocity += anchor.weight[k] * v.segment<3>(anchor.dof[k]);
     out.slope += anchor.slope_weight[k] * q.segment<3>(anchor.dof[k]);
     slope_rate += anchor.slope_weight[k] * v.segment<3>(anchor.dof[k]);

@@ -25,14 +25,14 @@ namespace ancfnet {
 /// An anchor's motion at (q, v) and its maps; blocks beyond num_blocks are unused.
 struct AnchorMotion {
   int num_blocks = 0;
-  std::array<Index, 4> dof{};  ///< first coordinate of each block
-  Vector3d center = Vector3d::Zero();           ///< c (m)
-  Vector3d velocity = Vector3d::Zero();         ///< ċ (m/s)
+  std::array<Index, 4> dof{};                    ///< first coordinate of each block
+  Vector3d center = Vector3d::Zero();            ///< c (m)
+  Vector3d velocity = Vector3d::Zero();          ///< ċ (m/s)
   Vector3d angular_velocity = Vector3d::Zero();  ///< ω (rad/s, world)
-  std::array<Matrix3d, 4> a{};  ///< A_b = ∂ċ/∂v_b = ∂c/∂q_b
-  std::array<Matrix3d, 4> b{};  ///< B_b = ∂ω/∂v_b
-  std::array<Matrix3d, 4> c{};  ///< C_b = ∂ċ/∂q_b
-  std::array<Matrix3d, 4> d{};  ///< D_b = ∂ω/∂q_b
+  std::array<Matrix3d, 4> a{};                   ///< A_b = ∂ċ/∂v_b = ∂c/∂q_b
+  std::array<Matrix3d, 4> b{};                   ///< B_b = ∂ω/∂v_b
+  std::array<Matrix3d, 4> c{};                   ///< C_b = ∂ċ/∂q_b
+  std::array<Matrix3d, 4> d{};                   ///< D_b = ∂ω/∂q_b
   // For the geometric stiffness: the body's R and s_B, or the cable's slope a.
   Matrix3d rotation = Matrix3d::Identity();
   Vector3d body_point = Vector3d::Zero();
@@ -49,6 +49,10 @@ struct AnchorMotion {
   /// w'_k w'_l ∂((m × a)/|a|²)/∂a on a cable point's, zero elsewhere.
   Matrix3d GeometricStiffness(int k, int l, const Vector3d& f, const Vector3d& m) const;
 };
+
+/// The centre c of `anchor` at q (m, world), with the bodies' reference rotations `rotation`.
+Vector3d CalcAnchorCenter(const Model& model, const JointAnchor& anchor, const VectorXd& q,
+                          const std::vector<Matrix3d>& rotation);
 
 /// The motion of `anchor` at (q, v); a body's pose uses its reference rotation in `rotation`
 /// (State::body_rotation or Workspace::body_rotation).

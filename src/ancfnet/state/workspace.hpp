@@ -36,8 +36,6 @@ struct Workspace {
   // Copied from State::joint_history by the integrators at the start of a step: the impact
   // speeds the clearance joints' forces are evaluated with.
   std::vector<ContactPairHistory> joint_history;
-  /// Elastic energy stored in the clearance joints (J): set by AddClearanceJointForces.
-  double joint_energy = 0.0;
 
   // Global coordinate vectors (all coordinates, fixed included).
   VectorXd internal_force;  ///< Q_int(q, v): CalcInternalForces

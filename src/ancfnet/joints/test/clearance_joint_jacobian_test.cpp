@@ -24,8 +24,8 @@ const Vector3d kRopeEnd(0.3, 0.1, 0.05);
 // (a revolute joint's journal also 4 mm along the axis, which does not count).
 const Vector3d kBearingCenter = 0.3 * kRopeEnd;
 Vector3d JournalCenter(ClearanceJoint::Type type) {
-  const Vector3d axial = type == ClearanceJoint::Type::kRevolute ? Vector3d(0, 0, 4e-3)
-                                                                  : Vector3d::Zero();
+  const Vector3d axial =
+      type == ClearanceJoint::Type::kRevolute ? Vector3d(0, 0, 4e-3) : Vector3d::Zero();
   return kBearingCenter + (kClearance + 5e-5) * Vector3d(0.6, 0.8, 0.0) + axial;
 }
 
@@ -55,14 +55,14 @@ Model MakeJointModel(const Case& c, bool journal_on_point_mass) {
   ModelBuilder builder;
   test::AddTestRope(Vector3d::Zero(), kRopeEnd, &builder);
   builder.SetInitialVelocity("rope", Vector3d(0.01, 0.02, -0.01), Vector3d(1.0, -2.0, 3.0));
-  ClearanceJointSpec spec{.name = "pin",
-                          .type = c.type,
-                          .clearance = kClearance,
-                          .journal_radius = kJournalRadius,
-                          .axis = Vector3d(0, 0, 2),
-                          .normal = MakeDissipativeContactLaw(NormalLawKind::kLankaraniNikravesh,
-                                                              1e8, 0.7),
-                          .friction = c.friction};
+  ClearanceJointSpec spec{
+      .name = "pin",
+      .type = c.type,
+      .clearance = kClearance,
+      .journal_radius = kJournalRadius,
+      .axis = Vector3d(0, 0, 2),
+      .normal = MakeDissipativeContactLaw(NormalLawKind::kLankaraniNikravesh, 1e8, 0.7),
+      .friction = c.friction};
   // The journal: a body, a point mass or the ground.
   const Vector3d journal_center = JournalCenter(c.type);
   if (c.journal == Kind::kBody) {
@@ -104,8 +104,8 @@ double CalcJacobianError(const Model& model, const VectorXd& q, const VectorXd& 
   AddClearanceJointJacobians(model, q, v, weights, ws, &matrix);
   const MatrixXd analytic = MatrixXd(matrix.matrix());
   const MatrixXd fd = test::CalcCentralDifferenceJacobian(
-      [&](const VectorXd& x, const VectorXd& x_dot) { return CalcJointForces(model, x, x_dot); },
-      q, v, weights.stiffness != 0.0);
+      [&](const VectorXd& x, const VectorXd& x_dot) { return CalcJointForces(model, x, x_dot); }, q,
+      v, weights.stiffness != 0.0);
   return (analytic - fd).norm() / fd.norm();
 }
 
@@ -144,13 +144,12 @@ TEST(ClearanceJointJacobian, GroundJournalInABodyAndInACablePoint) {
   ExpectJacobiansMatch({"revolute ground in body", Kind::kGround, Kind::kBody,
                         ClearanceJoint::Type::kRevolute, kTanh});
   ExpectJacobiansMatch({"spherical ground in cable", Kind::kGround, Kind::kPoint,
-                        ClearanceJoint::Type::kSpherical,
-                        MakeAmbrosioFriction(0.25, 1e-3, 1e-2)});
+                        ClearanceJoint::Type::kSpherical, MakeAmbrosioFriction(0.25, 1e-3, 1e-2)});
 }
 
 TEST(ClearanceJointJacobian, BodyInBodyAndPointMassInBody) {
-  ExpectJacobiansMatch({"revolute body in body", Kind::kBody, Kind::kBody,
-                        ClearanceJoint::Type::kRevolute, kTanh});
+  ExpectJacobiansMatch(
+      {"revolute body in body", Kind::kBody, Kind::kBody, ClearanceJoint::Type::kRevolute, kTanh});
   ExpectJacobiansMatch({"spherical point mass in body", Kind::kPoint, Kind::kBody,
                         ClearanceJoint::Type::kSpherical, kTanh},
                        /*journal_on_point_mass=*/true);
@@ -176,8 +175,8 @@ TEST(ClearanceJointForces, ActionAndReactionBalanceAndTheFrictionMomentIsMuNR) {
   const VectorXd q_int = CalcJointForces(model, state.q, state.v);
   Vector3d force = Vector3d::Zero();
   Vector3d moment = Vector3d::Zero();
-  for (const JointAnchor* anchor : {&model.clearance_joints()[0].journal,
-                                    &model.clearance_joints()[0].bearing}) {
+  for (const JointAnchor* anchor :
+       {&model.clearance_joints()[0].journal, &model.clearance_joints()[0].bearing}) {
     const RigidBody& body = model.rigid_bodies()[anchor->body];
     const Vector3d x = state.q.segment<3>(body.position_dof());
     const Vector3d f = -q_int.segment<3>(body.position_dof());
