@@ -3,6 +3,7 @@
 #include "ancfnet/assembly/body_forces.hpp"
 #include "ancfnet/assembly/link_forces.hpp"
 #include "ancfnet/forces/orbital_frame.hpp"
+#include "ancfnet/joints/clearance_joint_forces.hpp"
 
 namespace ancfnet {
 
@@ -22,7 +23,7 @@ double CalcStrainEnergy(const Model& model, const Workspace& ws, const VectorXd&
   for (const CableElement& element : model.elements())
     energy += CalcCableStrainEnergy(element.parameters, model.Gather(element, q));
   return energy + CalcLinkEnergy(model, ws, q) + CalcAttachmentEnergy(model, ws, q) +
-         ws.contact_energy;
+         ws.contact_energy + CalcClearanceJointEnergy(model, q, ws.body_rotation);
 }
 
 EnergyTracker::EnergyTracker(const Model& model, const Workspace& ws, const State& state,

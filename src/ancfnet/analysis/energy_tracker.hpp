@@ -12,8 +12,8 @@ namespace ancfnet {
 /// Kinetic energy ½ Σ v_eᵀ M_e v_e, with ½ m |ẋ|² + ½ ωᵀ J_B ω of every rigid body (J).
 double CalcKineticEnergy(const Model& model, const Workspace& ws, const VectorXd& v);
 /// Strain energy Σ U_e(q) of the cable elements plus the energy stored in the intact links, the
-/// body attachments (with the reference orientations in ws.body_rotation) and,
-/// as last evaluated into ws.contact_energy, in the contacts (J).
+/// body attachments and the clearance joints (with the reference orientations in
+/// ws.body_rotation) and, as last evaluated into ws.contact_energy, in the contacts (J).
 double CalcStrainEnergy(const Model& model, const Workspace& ws, const VectorXd& q);
 
 /// How a step's work W and dissipation D are integrated (docs/theory.md, "Energy accounting"):

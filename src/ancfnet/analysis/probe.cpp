@@ -6,6 +6,7 @@
 #include "ancfnet/analysis/cable_tension.hpp"
 #include "ancfnet/analysis/net_metrics.hpp"
 #include "ancfnet/assembly/link_forces.hpp"
+#include "ancfnet/joints/clearance_joint_forces.hpp"
 #include "ancfnet/model/rigid_body_kinematics.hpp"
 
 namespace ancfnet {
@@ -46,6 +47,15 @@ std::vector<std::string> ProbeColumns(const Probe& probe) {
               n + ".my",
               n + ".mz",
               n + ".max_penetration"};
+    case ProbeQuantity::kClearanceJoint:
+      return {n + ".ex",
+              n + ".ey",
+              n + ".ez",
+              n + ".penetration",
+              n + ".normal_force",
+              n + ".friction_force",
+              n + ".friction_moment",
+              n + ".mode"};
   }
   return {};
 }
@@ -161,6 +171,20 @@ void EvaluateProbe(const Probe& probe, const Model& model, const State& state,
       values->insert(values->end(),
                      {static_cast<double>(c.active), c.normal_force, c.friction_force, f.x(), f.y(),
                       f.z(), m.x(), m.y(), m.z(), c.max_penetration});
+      break;
+    }
+    case ProbeQuantity::kClearanceJoint: {
+      const ClearanceJoint& joint = model.clearance_joints()[probe.joint];
+      const ClearanceJointState s =
+          CalcClearanceJointState(model, probe.joint, state.q, state.v, state.body_rotation,
+                                  state.joint_history[probe.joint]);
+      const ClearanceContact& c = s.contact;
+      const double moment = joint.type == ClearanceJoint::Type::kRevolute
+                                ? c.journal_moment.dot(joint.axis)
+                                : c.journal_moment.norm();
+      values->insert(values->end(),
+                     {c.eccentricity.x(), c.eccentricity.y(), c.eccentricity.z(), c.penetration,
+                      c.normal_force, c.friction.norm(), moment, static_cast<double>(s.mode)});
       break;
     }
   }

@@ -30,6 +30,14 @@ enum class ProbeQuantity {
   /// NAME.active, NAME.normal_force, NAME.friction_force, NAME.fx/fy/fz, NAME.mx/my/mz,
   /// NAME.max_penetration: the active contacts (of one target, or all), see ContactProbeValues.
   kContact,
+  /// NAME.ex/ey/ez, NAME.penetration, NAME.normal_force, NAME.friction_force,
+  /// NAME.friction_moment, NAME.mode of a clearance joint (joints/clearance_joint_forces.hpp):
+  /// the eccentricity e of the journal relative to the bearing (m, world axes; in the joint's
+  /// plane for a revolute joint: its orbit), δ = |e| − c (m, < 0 in free flight), F_n (N), |f_t|
+  /// (N), the friction moment on the journal m_J (N m; its component along the axis for a
+  /// revolute joint, its magnitude for a spherical one) and the mode (0 free flight, 1 contact,
+  /// 2 impact).
+  kClearanceJoint,
 };
 
 /// A named probe. Position and velocity probes read a point (a cable material point or a point
@@ -44,6 +52,7 @@ struct Probe {
   Index link = -1;
   Index body = -1;
   Index target = -1;  ///< kContact: index into ContactSpec::targets, or −1 for every contact
+  Index joint = -1;   ///< kClearanceJoint: index into Model::clearance_joints()
   Vector3d reference = Vector3d::Zero();  ///< kDistance: the centroid at the start
 };
 

@@ -4,6 +4,8 @@
 #include "ancfnet/assembly/link_forces.hpp"
 #include "ancfnet/elements/hermite_shape.hpp"
 #include "ancfnet/forces/orbital_frame.hpp"
+#include "ancfnet/forces/slope_moment.hpp"
+#include "ancfnet/joints/clearance_joint_forces.hpp"
 
 namespace ancfnet {
 namespace {
@@ -13,21 +15,6 @@ constexpr std::size_t kParallelElements = 64;
 
 void ScatterAdd(const CableElement& element, const Vector12d& f, VectorXd* global) {
   for (int i = 0; i < kCableElementDofs; ++i) (*global)[element.dofs[i]] += f[i];
-}
-
-// Slope generalised force of a moment M at a node with slope a = r':
-// Q = (M × a) / |a|², from δW = M · (a × δa) / |a|² (docs/theory.md, "Point moment").
-Vector3d MomentSlopeForce(const Vector3d& moment, const Vector3d& a) {
-  return moment.cross(a) / a.squaredNorm();
-}
-
-// ∂Q/∂a of MomentSlopeForce.
-Matrix3d MomentSlopeJacobian(const Vector3d& moment, const Vector3d& a) {
-  const double g = a.squaredNorm();
-  Matrix3d skew_m;
-  skew_m << 0.0, -moment.z(), moment.y(), moment.z(), 0.0, -moment.x(), -moment.y(), moment.x(),
-      0.0;
-  return skew_m / g - 2.0 / (g * g) * moment.cross(a) * a.transpose();
 }
 
 // scale · m I on the diagonal block of every point mass.
@@ -56,6 +43,7 @@ void CalcInternalForces(const Model& model, const VectorXd& q, const VectorXd& v
   }
   AddLinkForces(model, q, v, ws);
   AddBodyForces(model, q, v, ws);
+  AddClearanceJointForces(model, q, v, ws);
   AddOrbitalFrameForces(model, q, v, ws);
 }
 
@@ -68,7 +56,7 @@ void CalcExternalForces(const Model& model, const VectorXd& q, double load_facto
   }
   for (const PointMoment& load : model.point_moments()) {
     const Index slope = model.NodeSlopeDof(load.node);
-    ws.applied_force.segment<3>(slope) += MomentSlopeForce(load.moment, q.segment<3>(slope));
+    ws.applied_force.segment<3>(slope) += CalcSlopeMomentForce(load.moment, q.segment<3>(slope));
   }
   ws.applied_force *= load_factor;
   ws.external_force = ws.applied_force + load_factor * ws.gravity_force;
@@ -103,6 +91,8 @@ void AssembleIterationMatrix(const Model& model, const VectorXd& q, const Vector
   AddLinkJacobians(model, q, v, weights, ws, matrix);
   AddBodyForces(model, q, v, ws);
   AddBodyJacobians(model, q, v, weights, ws, matrix);
+  AddClearanceJointForces(model, q, v, ws);
+  AddClearanceJointJacobians(model, q, v, weights, ws, matrix);
   AddOrbitalFrameForces(model, q, v, ws);
   AddOrbitalFrameJacobians(model, ws, weights.stiffness, weights.damping, matrix);
   if (weights.mass != 0.0) {
@@ -112,7 +102,7 @@ void AssembleIterationMatrix(const Model& model, const VectorXd& q, const Vector
   // Point moments depend on the slope: −c_K λ ∂Q_ext/∂q.
   for (const PointMoment& load : model.point_moments()) {
     const Index slope = model.NodeSlopeDof(load.node);
-    matrix->AddBlock3(slope, slope, MomentSlopeJacobian(load.moment, q.segment<3>(slope)),
+    matrix->AddBlock3(slope, slope, CalcSlopeMomentJacobian(load.moment, q.segment<3>(slope)),
                       -weights.stiffness * load_factor);
   }
 }

@@ -10,7 +10,8 @@
 namespace ancfnet {
 
 /// Fills ws.internal_force and ws.viscous_force (all coordinates) from the cable elements (in
-/// parallel), the spring-damper links and the rigid bodies (gyroscopic terms, attachments).
+/// parallel), the spring-damper links, the rigid bodies (gyroscopic terms, attachments) and the
+/// clearance joints.
 void CalcInternalForces(const Model& model, const VectorXd& q, const VectorXd& v, Workspace& ws);
 
 /// Fills ws.applied_force (point forces, point moments, distributed loads) and ws.external_force

@@ -43,7 +43,8 @@ SystemMatrix::SystemMatrix(const Model& model, const DofMap& dofs)
       num_elements_(static_cast<Index>(model.elements().size())),
       num_point_masses_(static_cast<Index>(model.point_masses().size())),
       num_links_(static_cast<Index>(model.links().size())),
-      num_bodies_(static_cast<Index>(model.rigid_bodies().size())) {
+      num_bodies_(static_cast<Index>(model.rigid_bodies().size())),
+      num_attachments_(static_cast<Index>(model.body_attachments().size())) {
   for (const CableElement& element : model.elements())
     group_blocks_.push_back({element.dofs[0], element.dofs[3], element.dofs[6], element.dofs[9]});
   for (const PointMass& point : model.point_masses()) group_blocks_.push_back({point.dof});
@@ -61,6 +62,19 @@ SystemMatrix::SystemMatrix(const Model& model, const DofMap& dofs)
     const RigidBody& body = model.rigid_bodies()[attachment.body];
     group.push_back(body.position_dof());
     group.push_back(body.rotation_dof());
+    group_blocks_.push_back(group);
+  }
+  for (const ClearanceJoint& joint : model.clearance_joints()) {
+    std::vector<Index> group;
+    for (const JointAnchor* anchor : {&joint.journal, &joint.bearing}) {
+      if (anchor->kind == JointAnchor::Kind::kBody) {
+        const RigidBody& body = model.rigid_bodies()[anchor->body];
+        group.push_back(body.position_dof());
+        group.push_back(body.rotation_dof());
+      } else if (anchor->kind == JointAnchor::Kind::kPoint) {
+        group.insert(group.end(), anchor->dof.begin(), anchor->dof.begin() + anchor->num_blocks);
+      }
+    }
     group_blocks_.push_back(group);
   }
   Rebuild();
@@ -199,6 +213,13 @@ void SystemMatrix::AddBodyBlock(Index body, int i, int j, const Matrix3d& block,
 void SystemMatrix::AddAttachmentBlock(Index attachment, int i, int j, const Matrix3d& block,
                                       double scale) {
   AddGroupBlock(groups_[num_elements_ + num_point_masses_ + num_links_ + num_bodies_ + attachment],
+                i, j, block, scale);
+}
+
+void SystemMatrix::AddClearanceJointBlock(Index joint, int i, int j, const Matrix3d& block,
+                                          double scale) {
+  AddGroupBlock(groups_[num_elements_ + num_point_masses_ + num_links_ + num_bodies_ +
+                        num_attachments_ + joint],
                 i, j, block, scale);
 }
 

@@ -7,6 +7,7 @@
 
 #include "ancfnet/assembly/system_matrix.hpp"
 #include "ancfnet/contact/distance/segment_segment.hpp"
+#include "ancfnet/contact/impact_speed.hpp"
 
 namespace ancfnet {
 namespace {
@@ -284,12 +285,7 @@ void SelfContact::UpdateHistory(const VectorXd& q, const VectorXd& v,
     const PairState pair = CalcPair(c, q, v, PairDetail::kForce);
     const double closing = std::max(-pair.direction.dot(pair.velocity), 0.0);
     ContactPairHistory value{.speed = c.history.speed, .bristle = pair.force.bristle};
-    if (!pair.force.touching) {
-      value.speed = -closing;  // apart: remember how fast it closes in
-    } else if (value.speed <= 0.0) {
-      // Just touched: its impact speed is the closing speed before the touch.
-      value.speed = std::max(std::max(-value.speed, closing), min_speed);
-    }
+    UpdateImpactSpeed(pair.force.touching, closing, min_speed, &value);
     history->push_back({c.a, c.b, value});
   }
 }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "ancfnet/contact/impact_speed.hpp"
 #include "ancfnet/elements/hermite_shape.hpp"
 
 namespace ancfnet {
@@ -327,13 +328,8 @@ void TargetContact::UpdateHistory(const VectorXd& q, const VectorXd& v,
       stored.bristle = bristles
                            ? CalcPairForce(frames_[t], probes_[p], point, stored, false).bristle
                            : Vector3d::Zero();
-      if (!(k.penetration > 0.0)) {
-        stored.speed = -closing;  // apart: remember how fast it closes in
-      } else if (stored.speed <= 0.0) {
-        // Just touched: its impact speed is the closing speed before the touch.
-        stored.speed =
-            std::max(std::max(-stored.speed, closing), model_.contact().normal.min_approach_speed);
-      }
+      UpdateImpactSpeed(k.penetration > 0.0, closing, model_.contact().normal.min_approach_speed,
+                        &stored);
     }
   }
 }

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "ancfnet/common/error.hpp"
+#include "ancfnet/joints/clearance_joint_forces.hpp"
 #include "ancfnet/model/rigid_body_kinematics.hpp"
 
 namespace ancfnet {
@@ -29,6 +30,7 @@ ExplicitVerletIntegrator::ExplicitVerletIntegrator(const Model& model)
 bool ExplicitVerletIntegrator::Initialize(State* state) {
   ws_.link_broken = state->link_broken;
   ws_.body_rotation = state->body_rotation;
+  ws_.joint_history = state->joint_history;
   contact_history_ = state->contact_history;
   SystemMatrix mass(model_, dofs_);
   AssembleMassMatrix(model_, ws_, &mass);
@@ -84,6 +86,9 @@ StepOutcome ExplicitVerletIntegrator::Step(double h, State* state) {
     contact_.UpdateHistory(state->q, state->v, &state->contact_history);
     contact_history_ = state->contact_history;
   }
+  UpdateClearanceJointHistory(model_, state->q, state->v, state->body_rotation,
+                              &state->joint_history);
+  ws_.joint_history = state->joint_history;
   // Bodies: ψ_{n+1} = h ω_{n+½} is the Lie-group increment; rebase R_ref on it.
   RebaseBodyRotations(model_, state);
   ws_.body_rotation = state->body_rotation;

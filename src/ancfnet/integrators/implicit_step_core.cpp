@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "ancfnet/integrators/initial_acceleration.hpp"
+#include "ancfnet/joints/clearance_joint_forces.hpp"
 #include "ancfnet/model/rigid_body_kinematics.hpp"
 
 namespace ancfnet {
@@ -30,6 +31,7 @@ ImplicitStepCore::ImplicitStepCore(const Model& model, const DynamicSettings& se
 bool ImplicitStepCore::Initialize(State* state) {
   ws_.link_broken = state->link_broken;
   ws_.body_rotation = state->body_rotation;
+  ws_.joint_history = state->joint_history;
   newton_.InvalidateJacobian();
   if (!CalcInitialAcceleration(model_, dofs_, damping_, ws_, state)) return false;
   previous_ = *state;
@@ -44,6 +46,7 @@ bool ImplicitStepCore::BeginStep(double h, const State& state) {
   previous_.contact_history = state.contact_history;
   previous_.body_rotation = state.body_rotation;
   ws_.body_rotation = state.body_rotation;
+  ws_.joint_history = state.joint_history;
   if (h != last_h_) newton_.InvalidateJacobian();
   last_h_ = h;
   contact_.SetStepSize(h);
@@ -112,6 +115,9 @@ void ImplicitStepCore::AcceptStep(State* state) {
   }
   if (!self_contact_.empty())
     self_contact_.UpdateHistory(state->q, state->v, &state->self_contact_history);
+  UpdateClearanceJointHistory(model_, state->q, state->v, state->body_rotation,
+                              &state->joint_history);
+  ws_.joint_history = state->joint_history;
   RebaseBodyRotations(model_, state);
   ws_.body_rotation = state->body_rotation;
 }

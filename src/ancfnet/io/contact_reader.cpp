@@ -7,7 +7,6 @@
 #include "ancfnet/contact/mesh/triangle_mesh.hpp"
 
 namespace ancfnet {
-namespace {
 
 NormalLaw ReadNormalLaw(const YamlValue& value) {
   const YamlMap map = value.AsMap();
@@ -78,6 +77,8 @@ FrictionLaw ReadFriction(const YamlValue& value) {
   return value.Locate(
       [&] { return MakeLuGreFriction(statics, kinetic, stribeck, sigma0, sigma1, sigma2); });
 }
+
+namespace {
 
 // A unit axis (default e_z when absent); a zero vector is refused.
 Vector3d ReadAxis(const YamlMap& map) {

@@ -18,6 +18,12 @@
 
 namespace ancfnet {
 
+/// A normal law map ({type, stiffness, ...} as under `law` above; InputError at its key).
+NormalLaw ReadNormalLaw(const YamlValue& value);
+
+/// A friction law map ({type, ...} as under `friction` above).
+FrictionLaw ReadFriction(const YamlValue& value);
+
 /// Sets the model's contact; InputError with file, line and key on any mistake. A mesh's relative
 /// `file` is taken from `scene_directory`.
 void ReadContact(const YamlValue& value, const std::filesystem::path& scene_directory,

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "ancfnet/common/error.hpp"
+#include "ancfnet/io/clearance_joint_reader.hpp"
 #include "ancfnet/io/closest_name.hpp"
 #include "ancfnet/io/connection_law_reader.hpp"
 #include "ancfnet/io/contact_reader.hpp"
@@ -284,7 +285,8 @@ std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
                                     {"link_force", ProbeQuantity::kLinkForce},
                                     {"body_pose", ProbeQuantity::kBodyPose},
                                     {"body_velocity", ProbeQuantity::kBodyVelocity},
-                                    {"contact", ProbeQuantity::kContact}});
+                                    {"contact", ProbeQuantity::kContact},
+                                    {"clearance_joint", ProbeQuantity::kClearanceJoint}});
     const bool whole_system = probe.quantity == ProbeQuantity::kEnergy;
     const bool of_a_point =
         probe.quantity == ProbeQuantity::kPosition || probe.quantity == ProbeQuantity::kVelocity;
@@ -294,6 +296,7 @@ std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
     const bool of_a_body = probe.quantity == ProbeQuantity::kBodyPose ||
                            probe.quantity == ProbeQuantity::kBodyVelocity;
     const bool of_contacts = probe.quantity == ProbeQuantity::kContact;
+    const bool of_a_joint = probe.quantity == ProbeQuantity::kClearanceJoint;
     if (of_a_body)
       map.CheckKeys({"name", "quantity", "body"});
     else if (of_a_point)
@@ -304,6 +307,8 @@ std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
       map.CheckKeys({"name", "quantity", "link"});
     else if (of_contacts)
       map.CheckKeys({"name", "quantity", "target"});
+    else if (of_a_joint)
+      map.CheckKeys({"name", "quantity", "joint"});
     else
       map.CheckKeys({"name", "quantity", "net"});
     const YamlValue name = map.Get("name");
@@ -325,6 +330,9 @@ std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
       if (auto target = map.Find("target"))
         probe.target =
             ReadNamedIndex(*target, model.contact().targets, "contact target", "targets");
+    } else if (of_a_joint) {
+      probe.joint =
+          ReadNamedIndex(map.Get("joint"), model.clearance_joints(), "clearance joint", "joints");
     } else if (!whole_system) {
       probe.net = ReadNamedIndex(map.Get("net"), model.nets(), "net", "nets");
       probe.reference = CalcNetCentroid(model, model.nets()[probe.net], model.initial_positions());
@@ -339,8 +347,8 @@ Scene ReadScene(const YamlValue& root, const std::filesystem::path& scene_direct
     root.FailPlain("the scene is empty (expected a map with materials, sections and cables)");
   const YamlMap scene = root.AsMap();
   scene.CheckKeys({"gravity", "orbital_frame", "materials", "sections", "point_masses", "nets",
-                   "cables", "bodies", "attachments", "spring_dampers", "constraints", "loads",
-                   "damping", "contact", "probes", "analysis", "output"});
+                   "cables", "bodies", "attachments", "joints", "spring_dampers", "constraints",
+                   "loads", "damping", "contact", "probes", "analysis", "output"});
   ModelBuilder builder;
   if (auto v = scene.Find("gravity")) {
     const Vector3d gravity = v->AsVector3();
@@ -369,6 +377,10 @@ Scene ReadScene(const YamlValue& root, const std::filesystem::path& scene_direct
       ReadBodyAttachment(
           item, [&](const YamlValue& point) { return ReadPoint(point, point_masses); },
           result.analysis.dynamics.time_step, &builder);
+  if (auto v = scene.Find("joints"))
+    for (const YamlValue& item : v->AsList())
+      ReadClearanceJoint(
+          item, [&](const YamlValue& point) { return ReadPoint(point, point_masses); }, &builder);
   if (auto v = scene.Find("spring_dampers"))
     for (const YamlValue& item : v->AsList()) ReadSpringDamper(item, point_masses, &builder);
   if (auto v = scene.Find("constraints"))

@@ -86,6 +86,14 @@ Json ProbeJson(const Probe& probe, const Model& model, const State& state,
                 {"force", {Number(values[3]), Number(values[4]), Number(values[5])}},
                 {"moment", {Number(values[6]), Number(values[7]), Number(values[8])}},
                 {"max_penetration", Number(values[9])}}}};
+    case ProbeQuantity::kClearanceJoint:
+      return {{"clearance_joint",
+               {{"eccentricity", {Number(values[0]), Number(values[1]), Number(values[2])}},
+                {"penetration", Number(values[3])},
+                {"normal_force", Number(values[4])},
+                {"friction_force", Number(values[5])},
+                {"friction_moment", Number(values[6])},
+                {"mode", static_cast<int>(values[7])}}}};
   }
   return Json::object();
 }

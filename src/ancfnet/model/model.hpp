@@ -11,6 +11,7 @@
 #include "ancfnet/common/types.hpp"
 #include "ancfnet/elements/ancf_cable.hpp"
 #include "ancfnet/forces/connection_law.hpp"
+#include "ancfnet/joints/clearance_joint.hpp"
 #include "ancfnet/model/contact_spec.hpp"
 #include "ancfnet/model/damping_spec.hpp"
 #include "ancfnet/model/material.hpp"
@@ -143,6 +144,8 @@ class Model {
   /// Rigid bodies (model/rigid_body.hpp) and their attachments.
   const std::vector<RigidBody>& rigid_bodies() const { return rigid_bodies_; }
   const std::vector<BodyAttachment>& body_attachments() const { return body_attachments_; }
+  /// Revolute and spherical clearance joints (joints/clearance_joint.hpp).
+  const std::vector<ClearanceJoint>& clearance_joints() const { return clearance_joints_; }
   /// True when a rigid body moves freely (static and modal analyses refuse such models).
   bool has_free_bodies() const;
   const std::vector<CableElement>& elements() const { return elements_; }
@@ -201,6 +204,7 @@ class Model {
   std::vector<Net> nets_;
   std::vector<RigidBody> rigid_bodies_;
   std::vector<BodyAttachment> body_attachments_;
+  std::vector<ClearanceJoint> clearance_joints_;
   std::vector<PointForce> point_forces_;
   std::vector<PointMoment> point_moments_;
   std::vector<DistributedLoad> distributed_loads_;

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "ancfnet/joints/clearance_joint_spec.hpp"
 #include "ancfnet/model/model.hpp"
 
 namespace ancfnet {
@@ -106,6 +107,10 @@ class ModelBuilder {
   Index AddRigidBody(const RigidBodySpec& spec);
   /// Ties a point to a body point (BodyAttachmentSpec).
   void AddBodyAttachment(const BodyAttachmentSpec& spec);
+  /// Adds a revolute or spherical clearance joint (joints/clearance_joint_spec.hpp): a unique
+  /// name, 0 < c < R_J, a non-zero axis, a valid law and a regularised friction law, anchors that
+  /// name existing bodies, point masses or cable points, not both the ground. Bodies first.
+  void AddClearanceJoint(const ClearanceJointSpec& spec);
   /// Fixes position and slope of the node at `at` (which must be a node).
   void AddClamp(const CablePointRef& at);
   /// Fixes the position of the node at `at`; the slope stays free.

@@ -13,6 +13,7 @@ Workspace::Workspace(const Model& model)
       element_stiffness(model.elements().size()),
       element_damping(model.elements().size()),
       link_broken(model.links().size(), 0),
+      joint_history(model.clearance_joints().size()),
       internal_force(VectorXd::Zero(model.num_dofs())),
       viscous_force(VectorXd::Zero(model.num_dofs())),
       applied_force(VectorXd::Zero(model.num_dofs())),

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "ancfnet/common/types.hpp"
+#include "ancfnet/state/state.hpp"
 
 namespace ancfnet {
 
@@ -32,6 +33,9 @@ struct Workspace {
   std::vector<Matrix3d> body_rotation;
   /// Elastic energy stored in the contacts (J): set by the contact forces (TargetContact).
   double contact_energy = 0.0;
+  // Copied from State::joint_history by the integrators at the start of a step: the impact
+  // speeds the clearance joints' forces are evaluated with.
+  std::vector<ContactPairHistory> joint_history;
 
   // Global coordinate vectors (all coordinates, fixed included).
   VectorXd internal_force;  ///< Q_int(q, v): CalcInternalForces
