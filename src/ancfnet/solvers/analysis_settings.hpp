@@ -41,12 +41,13 @@ struct DynamicSettings {
   double end_time = 1.0;         ///< s, > 0
   double min_time_step = 0.0;    ///< smallest step after cuts (s); 0: time_step / 2¹⁰
   JacobianUpdate jacobian_update = JacobianUpdate::kAdaptive;
-  /// Energy step control: the largest gain of the energy balance (kinetic + strain + gravity +
+  /// Energy step control: the largest drift of the energy balance (kinetic + strain + gravity +
   /// dissipated − work) over the run, as a fraction of the energy scale (the largest
   /// kinetic + strain + |gravity| + |work| + dissipated so far), that the step size is held to
   /// (solvers/energy_step_control.hpp); 0 (the default): off, steps of time_step unless cut.
   /// Off by default: a scene that starts at rest has no energy scale yet, and the control then
-  /// cuts the step for rounding.
+  /// cuts the step for rounding; a net resting on a target loses energy to the numerical damping
+  /// of contact no step resolves, and the control then cuts the step to no avail.
   double energy_drift = 0.0;
   NewtonSettings newton;
   ContactCouplingSettings contact_couplings;  ///< of the implicit integrators' iteration matrix

@@ -27,9 +27,7 @@ EnergyStepControl::EnergyStepControl(double drift, double start, double end,
 
 double EnergyStepControl::Cut(double h, const EnergyAccount& account) {
   const double balance = account.Balance();
-  // Energy created: numerical dissipation (ρ∞ < 1 damping modes the step does not resolve) is
-  // the integrator's intent and is left to the balance's report.
-  const double error = std::max(balance - balance_, 0.0);
+  const double error = std::abs(balance - balance_);
   balance_ = balance;
   scale_ = std::max(scale_, EnergyScale(account));
   may_grow_ = true;

@@ -14,7 +14,8 @@ namespace ancfnet {
 /// each event leaves an error ∝ h (the trapezoidal work of a force switched on or off within the
 /// step) and events come at a rate set by the motion, so the error of a step is ∝ h²: its ratio
 /// e/e* is ∝ h, and the next step is h e*/e, at least h/4. A step within half its budget lets the
-/// step grow again.
+/// step grow again. Energy lost counts as well as energy created (e = |B_{n+1} − B_n|): counting
+/// only the gain let the capture demo gain 1.8 % where its budget was 0.5 %.
 class EnergyStepControl {
  public:
   /// η = `drift` (0: off), over the run from t₀ = `start` to `end` (s), from the account at t₀.

@@ -1,7 +1,7 @@
 // The energy step control (solvers/energy_step_control.hpp) on hand-made energy accounts: a
-// step within its budget is not cut, one that creates more is cut by 0.9 e*/e (at most to a
-// quarter), energy lost (numerical dissipation) is not held against it, the scale grows with the
-// energy met, and η = 0 turns the control off.
+// step within its budget is not cut, one that changes the balance by more is cut by 0.9 e*/e (at
+// most to a quarter), whichever the sign, the scale grows with the energy met, and η = 0 turns
+// the control off.
 
 #include "ancfnet/solvers/energy_step_control.hpp"
 
@@ -27,19 +27,19 @@ TEST(EnergyStepControl, AStepWithinItsBudgetIsNotCut) {
 TEST(EnergyStepControl, AStepOverItsBudgetCutsTheNextInProportion) {
   EnergyStepControl control(0.01, 0.0, 1.0, Initial());
   EnergyAccount next = Initial();
-  next.dissipated = -3e-3;  // energy created: 3 e* (the balance falls by the same amount)
+  next.dissipated = -3e-3;  // the balance rises by 3 e*
   next.kinetic += 6e-3;
   EXPECT_NEAR(control.Cut(1e-3, next), 0.9 / 3.0, 1e-4);
   next.kinetic += 1.0;  // far over: cut to a quarter, no less
   EXPECT_EQ(control.Cut(1e-3, next), 0.25);
 }
 
-TEST(EnergyStepControl, EnergyLostIsNotCut) {
+TEST(EnergyStepControl, EnergyLostCountsAsEnergyCreated) {
   EnergyStepControl control(0.01, 0.0, 1.0, Initial());
   EnergyAccount next = Initial();
-  next.kinetic -= 5e-3;  // the balance fell by 5 e*: the integrator's numerical damping
-  EXPECT_EQ(control.Cut(1e-3, next), 1.0);
-  EXPECT_TRUE(control.may_grow());
+  next.kinetic -= 2e-3;  // the balance fell by 2 e*
+  EXPECT_NEAR(control.Cut(1e-3, next), 0.45, 1e-4);
+  EXPECT_FALSE(control.may_grow());
 }
 
 TEST(EnergyStepControl, TheScaleGrowsWithTheEnergyMet) {
