@@ -1,7 +1,7 @@
 #include "ancfnet/analysis/energy_tracker.hpp"
 
-#include "ancfnet/assembly/body_forces.hpp"
-#include "ancfnet/assembly/link_forces.hpp"
+#include "ancfnet/forces/body_forces.hpp"
+#include "ancfnet/forces/link_forces.hpp"
 #include "ancfnet/forces/orbital_frame.hpp"
 
 namespace ancfnet {

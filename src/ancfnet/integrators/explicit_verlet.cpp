@@ -8,6 +8,7 @@
 
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/model/rigid_body_kinematics.hpp"
+#include "ancfnet/state/rigid_body_state.hpp"
 
 namespace ancfnet {
 

@@ -4,6 +4,7 @@
 
 #include "ancfnet/integrators/initial_acceleration.hpp"
 #include "ancfnet/model/rigid_body_kinematics.hpp"
+#include "ancfnet/state/rigid_body_state.hpp"
 
 namespace ancfnet {
 

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "ancfnet/common/types.hpp"
+#include "ancfnet/contact/contact_spec.hpp"
 #include "ancfnet/elements/ancf_cable.hpp"
-#include "ancfnet/forces/connection_law.hpp"
-#include "ancfnet/model/contact_spec.hpp"
+#include "ancfnet/elements/connection_law.hpp"
 #include "ancfnet/model/damping_spec.hpp"
 #include "ancfnet/model/material.hpp"
 #include "ancfnet/model/prescribed_motion.hpp"
@@ -153,7 +153,7 @@ class Model {
   /// Mean motion n (rad/s) of the target's circular orbit when the model is written in its
   /// Hill frame (forces/orbital_frame.hpp); empty for an inertial frame.
   const std::optional<double>& orbital_frame() const { return orbital_frame_; }
-  /// Rayleigh and modal damping of the whole model (forces/damping_model.hpp).
+  /// Rayleigh and modal damping of the whole model (solvers/damping_model.hpp).
   const DampingSpec& damping() const { return damping_; }
   /// Contact with rigid targets (forces/target_contact.hpp).
   const ContactSpec& contact() const { return contact_; }

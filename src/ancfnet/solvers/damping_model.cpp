@@ -1,13 +1,13 @@
-#include "ancfnet/forces/damping_model.hpp"
+#include "ancfnet/solvers/damping_model.hpp"
 
 #include <fmt/format.h>
 
 #include <numbers>
 
 #include "ancfnet/assembly/dof_map.hpp"
-#include "ancfnet/assembly/forces.hpp"
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/elements/ancf_cable.hpp"
+#include "ancfnet/forces/forces.hpp"
 #include "ancfnet/solvers/modal.hpp"
 
 namespace ancfnet {

@@ -1,4 +1,4 @@
-#include "ancfnet/contact/target_pair_jacobian.hpp"
+#include "ancfnet/forces/target_pair_jacobian.hpp"
 
 namespace ancfnet {
 namespace {

@@ -1,4 +1,4 @@
-#include "ancfnet/assembly/body_forces.hpp"
+#include "ancfnet/forces/body_forces.hpp"
 
 #include "ancfnet/forces/gyroscopic_force.hpp"
 

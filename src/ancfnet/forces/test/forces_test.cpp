@@ -1,4 +1,4 @@
-#include "ancfnet/assembly/forces.hpp"
+#include "ancfnet/forces/forces.hpp"
 
 #include <gtest/gtest.h>
 

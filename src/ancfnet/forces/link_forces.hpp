@@ -3,7 +3,7 @@
 /// a link whose second point feels f₂ adds −w_b f₂ to Q_int on the second point's blocks and
 /// +w_b f₂ on the first's (Q_int is on the left of M q̈ + Q_int = Q_ext).
 
-#include "ancfnet/assembly/forces.hpp"
+#include "ancfnet/forces/forces.hpp"
 #include "ancfnet/forces/spring_damper.hpp"
 
 namespace ancfnet {

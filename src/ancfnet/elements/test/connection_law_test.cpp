@@ -1,4 +1,4 @@
-#include "ancfnet/forces/connection_law.hpp"
+#include "ancfnet/elements/connection_law.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "ancfnet/assembly/link_forces.hpp"
+#include "ancfnet/forces/link_forces.hpp"
 
 #include "ancfnet/forces/spring_damper.hpp"
 

@@ -4,8 +4,8 @@
 /// attachments (forces/body_attachment.hpp), evaluated with the reference orientations in
 /// ws.body_rotation.
 
-#include "ancfnet/assembly/forces.hpp"
 #include "ancfnet/forces/body_attachment.hpp"
+#include "ancfnet/forces/forces.hpp"
 
 namespace ancfnet {
 

@@ -1,4 +1,4 @@
-#include "ancfnet/contact/self_contact_primitives.hpp"
+#include "ancfnet/forces/self_contact_primitives.hpp"
 
 #include <algorithm>
 #include <cmath>

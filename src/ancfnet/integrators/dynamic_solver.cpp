@@ -1,4 +1,4 @@
-#include "ancfnet/solvers/dynamic_solver.hpp"
+#include "ancfnet/integrators/dynamic_solver.hpp"
 
 #include <fmt/format.h>
 

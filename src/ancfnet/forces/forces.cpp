@@ -1,8 +1,8 @@
-#include "ancfnet/assembly/forces.hpp"
+#include "ancfnet/forces/forces.hpp"
 
-#include "ancfnet/assembly/body_forces.hpp"
-#include "ancfnet/assembly/link_forces.hpp"
 #include "ancfnet/elements/hermite_shape.hpp"
+#include "ancfnet/forces/body_forces.hpp"
+#include "ancfnet/forces/link_forces.hpp"
 #include "ancfnet/forces/orbital_frame.hpp"
 
 namespace ancfnet {
