@@ -38,8 +38,8 @@ foreach(folder IN LISTS folders)
     continue()
   endif()
   if(NOT folder IN_LIST ANCFNET_PARTS)
-    string(APPEND violations "  ${folder}/ is not a declared part: give it a CMakeLists.txt with "
-                             "ancfnet_add_part and add it, in layer order, to the list of parts\n")
+    string(APPEND violations "  ${folder}/ is not a declared part: give it a CMakeLists.txt calling "
+                             "ancfnet_add_part and add it to ANCFNET_LAYERS in layer order\n")
     continue()
   endif()
   foreach(file IN LISTS files)
