@@ -65,9 +65,9 @@ Matrix3d CalcAmplificationMatrix(const GeneralizedAlphaCoefficients& c, double o
   Matrix3d a;
   for (int j = 0; j < 3; ++j) {
     const Vector3d y = Vector3d::Unit(j);  // (x, h v, h² a)_n
-    const double a_next = -(c.alpha_m * y[2] + w2 * (y[0] + (1.0 - c.alpha_f) *
-                                                                (y[1] + (0.5 - c.beta) * y[2]))) /
-                          ((1.0 - c.alpha_m) + w2 * c.beta * (1.0 - c.alpha_f));
+    const double a_next =
+        -(c.alpha_m * y[2] + w2 * (y[0] + (1.0 - c.alpha_f) * (y[1] + (0.5 - c.beta) * y[2]))) /
+        ((1.0 - c.alpha_m) + w2 * c.beta * (1.0 - c.alpha_f));
     a(0, j) = y[0] + y[1] + (0.5 - c.beta) * y[2] + c.beta * a_next;
     a(1, j) = y[1] + (1.0 - c.gamma) * y[2] + c.gamma * a_next;
     a(2, j) = a_next;

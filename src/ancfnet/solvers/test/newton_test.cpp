@@ -48,7 +48,9 @@ class TwoUnknownProblem {
     if (scale == 1.0) iterates_.push_back(x_);
   }
   double IncrementNorm(const VectorXd& dx) const { return dx.cwiseAbs().maxCoeff() / 1e-10; }
-  double IncrementEnergy(const VectorXd& dx, const VectorXd& r) const { return std::abs(dx.dot(r)); }
+  double IncrementEnergy(const VectorXd& dx, const VectorXd& r) const {
+    return std::abs(dx.dot(r));
+  }
   double EnergyScale() const { return 1.0; }
 
   const Vector2d& x() const { return x_; }
@@ -69,16 +71,19 @@ TwoUnknownProblem MakeQuadraticProblem(const Vector2d& initial_guess) {
       [](const Vector2d& x) {
         return Vector2d(x[0] * x[0] + x[1] - 3.0, x[0] + x[1] * x[1] - 5.0);
       },
-      [](const Vector2d& x) { return Matrix2d{{2.0 * x[0], 1.0}, {1.0, 2.0 * x[1]}}; },
+      [](const Vector2d& x) {
+        return Matrix2d{{2.0 * x[0], 1.0}, {1.0, 2.0 * x[1]}};
+      },
       initial_guess);
 }
 
 // R = (atan x₀, x₁ − 1), root (0, 1). Plain Newton on atan diverges from |x₀| > 1.39.
 TwoUnknownProblem MakeArctangentProblem(const Vector2d& initial_guess) {
-  return TwoUnknownProblem(
-      [](const Vector2d& x) { return Vector2d(std::atan(x[0]), x[1] - 1.0); },
-      [](const Vector2d& x) { return Matrix2d{{1.0 / (1.0 + x[0] * x[0]), 0.0}, {0.0, 1.0}}; },
-      initial_guess);
+  return TwoUnknownProblem([](const Vector2d& x) { return Vector2d(std::atan(x[0]), x[1] - 1.0); },
+                           [](const Vector2d& x) {
+                             return Matrix2d{{1.0 / (1.0 + x[0] * x[0]), 0.0}, {0.0, 1.0}};
+                           },
+                           initial_guess);
 }
 
 NewtonSolver MakeFullNewton(bool line_search, int max_iterations = 12) {
@@ -129,7 +134,10 @@ TEST(NewtonTest, ReportsASingularIterationMatrix) {
   // R = (x₀ + x₁ − 1, 2 x₀ + 2 x₁ − 3): parallel lines, no root, ∂R/∂x singular everywhere.
   TwoUnknownProblem problem(
       [](const Vector2d& x) { return Vector2d(x[0] + x[1] - 1.0, 2.0 * x[0] + 2.0 * x[1] - 3.0); },
-      [](const Vector2d&) { return Matrix2d{{1.0, 1.0}, {2.0, 2.0}}; }, Vector2d::Zero());
+      [](const Vector2d&) {
+        return Matrix2d{{1.0, 1.0}, {2.0, 2.0}};
+      },
+      Vector2d::Zero());
   NewtonSolver newton = MakeFullNewton(/*line_search=*/false);
   const NewtonResult result = newton.Solve(problem);
   EXPECT_FALSE(result.converged);
