@@ -15,6 +15,7 @@ foreach(variable PART_TABLE SOURCE_ROOT)
   endif()
 endforeach()
 include("${PART_TABLE}")
+get_filename_component(SOURCE_ROOT "${SOURCE_ROOT}" ABSOLUTE)
 
 # Parts each part may include: itself and the transitive closure of its DEPENDS. The table lists
 # the parts lowest first, so a part's dependencies are complete when it is reached.
@@ -38,8 +39,9 @@ foreach(folder IN LISTS folders)
     continue()
   endif()
   if(NOT folder IN_LIST ANCFNET_PARTS)
-    string(APPEND violations "  ${folder}/ is not a declared part: give it a CMakeLists.txt calling "
-                             "ancfnet_add_part and add it to ANCFNET_LAYERS in layer order\n")
+    string(APPEND violations "  ${folder}/ is not a declared part: give it a CMakeLists.txt "
+                             "calling ancfnet_add_part and add it to ANCFNET_LAYERS in layer "
+                             "order\n")
     continue()
   endif()
   foreach(file IN LISTS files)
