@@ -5,9 +5,14 @@
 # Called from src/ancfnet/<part>/CMakeLists.txt. Builds ancfnet_<part> from every .cpp under the
 # part's folder except its test/ folders (an INTERFACE library when there is none), linked PUBLIC
 # to the parts it names. DEPENDS is the one declaration of the part's place in the layering: a
-# part may name only parts declared before it, so the parts form a chain of layers without
-# cycles, and the architecture check (cmake/check_architecture.cmake) lets a file include the
-# headers of its own part and of the parts reachable through DEPENDS, nothing else.
+# part may name only parts declared before it, so the parts form layers without cycles.
+#
+# Each part has its own include root, <build>/include/<part>, holding only the link
+# ancfnet/<part> -> src/ancfnet/<part>. A part's files are compiled with its own root and those
+# of the parts it links, so "ancfnet/<other>/x.hpp" of a part above or beside it is not found:
+# the compiler refuses the include. Targets linking ancfnet see every root. The architecture
+# check (cmake/check_architecture.cmake) also covers headers no .cpp of their part includes.
+# A header-only part takes LIBRARIES without PRIVATE (PUBLIC ones become INTERFACE).
 function(ancfnet_add_part part)
   cmake_parse_arguments(PARSE_ARGV 1 arg "" "" "DEPENDS;LIBRARIES")
   get_property(declared GLOBAL PROPERTY ANCFNET_PARTS)
@@ -24,11 +29,20 @@ function(ancfnet_add_part part)
   list(FILTER sources EXCLUDE REGEX "/test/")
   set(target ancfnet_${part})
   list(TRANSFORM arg_DEPENDS PREPEND ancfnet_ OUTPUT_VARIABLE dependency_targets)
+  set(include_root ${PROJECT_BINARY_DIR}/include/${part})
+  file(MAKE_DIRECTORY ${include_root}/ancfnet)
+  file(CREATE_LINK ${CMAKE_CURRENT_SOURCE_DIR} ${include_root}/ancfnet/${part} SYMBOLIC)
   if(sources)
     add_library(${target} ${sources})
+    target_include_directories(${target} PUBLIC ${include_root})
     target_link_libraries(${target} PUBLIC ${dependency_targets} ${arg_LIBRARIES})
   else()
+    if("PRIVATE" IN_LIST arg_LIBRARIES)
+      message(FATAL_ERROR "part '${part}' has no .cpp: its LIBRARIES cannot be PRIVATE")
+    endif()
+    list(TRANSFORM arg_LIBRARIES REPLACE "^PUBLIC$" INTERFACE)
     add_library(${target} INTERFACE)
+    target_include_directories(${target} INTERFACE ${include_root})
     target_link_libraries(${target} INTERFACE ${dependency_targets} ${arg_LIBRARIES})
   endif()
 endfunction()
