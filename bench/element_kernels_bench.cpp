@@ -13,9 +13,9 @@
 #include <numbers>
 
 #include "ancfnet/assembly/dof_map.hpp"
-#include "ancfnet/assembly/forces.hpp"
 #include "ancfnet/assembly/system_matrix.hpp"
 #include "ancfnet/elements/ancf_cable.hpp"
+#include "ancfnet/forces/forces.hpp"
 #include "ancfnet/integrators/generalized_alpha.hpp"
 #include "ancfnet/model/model_builder.hpp"
 #include "ancfnet/solvers/linear_solver.hpp"

@@ -5,7 +5,7 @@
 
 #include <benchmark/benchmark.h>
 
-#include "ancfnet/solvers/dynamic_solver.hpp"
+#include "ancfnet/integrators/dynamic_solver.hpp"
 #include "ancfnet/solvers/static_solver.hpp"
 #include "../tests/verification/verification_scenes.hpp"
 

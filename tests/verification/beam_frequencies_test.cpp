@@ -9,7 +9,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "ancfnet/assembly/forces.hpp"
+#include "ancfnet/forces/forces.hpp"
 #include "ancfnet/model/model_builder.hpp"
 #include "ancfnet/solvers/modal.hpp"
 #include "ancfnet/solvers/static_solver.hpp"

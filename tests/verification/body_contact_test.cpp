@@ -9,9 +9,9 @@
 
 #include "ancfnet/analysis/momentum.hpp"
 #include "ancfnet/forces/target_contact.hpp"
+#include "ancfnet/integrators/dynamic_solver.hpp"
 #include "ancfnet/model/model_builder.hpp"
 #include "ancfnet/model/rigid_body_kinematics.hpp"
-#include "ancfnet/solvers/dynamic_solver.hpp"
 #include "ancfnet/state/workspace.hpp"
 
 namespace ancfnet {

@@ -10,8 +10,8 @@
 
 #include "ancfnet/analysis/momentum.hpp"
 #include "ancfnet/common/error.hpp"
+#include "ancfnet/integrators/dynamic_solver.hpp"
 #include "ancfnet/model/net_builder.hpp"
-#include "ancfnet/solvers/dynamic_solver.hpp"
 
 namespace ancfnet {
 namespace {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "ancfnet/analysis/modal_identification.hpp"
-#include "ancfnet/solvers/dynamic_solver.hpp"
+#include "ancfnet/integrators/dynamic_solver.hpp"
 #include "ancfnet/solvers/modal.hpp"
 #include "verification_scenes.hpp"
 

@@ -8,9 +8,9 @@
 #include <numbers>
 #include <vector>
 
-#include "ancfnet/forces/connection_law.hpp"
+#include "ancfnet/elements/connection_law.hpp"
+#include "ancfnet/integrators/dynamic_solver.hpp"
 #include "ancfnet/model/model_builder.hpp"
-#include "ancfnet/solvers/dynamic_solver.hpp"
 
 namespace ancfnet {
 namespace {

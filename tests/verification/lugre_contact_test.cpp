@@ -19,8 +19,8 @@
 
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/forces/target_contact.hpp"
+#include "ancfnet/integrators/dynamic_solver.hpp"
 #include "ancfnet/model/model_builder.hpp"
-#include "ancfnet/solvers/dynamic_solver.hpp"
 #include "verification_scenes.hpp"
 
 namespace ancfnet {

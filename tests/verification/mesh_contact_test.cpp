@@ -16,8 +16,8 @@
 
 #include "ancfnet/contact/mesh/icosphere.hpp"
 #include "ancfnet/forces/target_contact.hpp"
+#include "ancfnet/integrators/dynamic_solver.hpp"
 #include "ancfnet/model/model_builder.hpp"
-#include "ancfnet/solvers/dynamic_solver.hpp"
 #include "verification_scenes.hpp"
 
 namespace ancfnet {

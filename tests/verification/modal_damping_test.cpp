@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "ancfnet/analysis/momentum.hpp"
-#include "ancfnet/solvers/dynamic_solver.hpp"
+#include "ancfnet/integrators/dynamic_solver.hpp"
 #include "ancfnet/solvers/modal.hpp"
 #include "verification_scenes.hpp"
 

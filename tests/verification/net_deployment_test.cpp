@@ -11,8 +11,8 @@
 #include <string>
 
 #include "ancfnet/analysis/probe.hpp"
+#include "ancfnet/integrators/dynamic_solver.hpp"
 #include "ancfnet/io/scene_loader.hpp"
-#include "ancfnet/solvers/dynamic_solver.hpp"
 
 namespace ancfnet {
 namespace {

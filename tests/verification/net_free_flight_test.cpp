@@ -13,8 +13,8 @@
 #include <cmath>
 
 #include "ancfnet/analysis/momentum.hpp"
+#include "ancfnet/integrators/dynamic_solver.hpp"
 #include "ancfnet/model/net_builder.hpp"
-#include "ancfnet/solvers/dynamic_solver.hpp"
 
 namespace ancfnet {
 namespace {

@@ -17,8 +17,8 @@
 #include "ancfnet/analysis/probe.hpp"
 #include "ancfnet/elements/hermite_shape.hpp"
 #include "ancfnet/forces/target_contact.hpp"
+#include "ancfnet/integrators/dynamic_solver.hpp"
 #include "ancfnet/io/scene_loader.hpp"
-#include "ancfnet/solvers/dynamic_solver.hpp"
 
 namespace ancfnet {
 namespace {

@@ -8,7 +8,7 @@
 #include <array>
 #include <cmath>
 
-#include "ancfnet/solvers/dynamic_solver.hpp"
+#include "ancfnet/integrators/dynamic_solver.hpp"
 #include "verification_scenes.hpp"
 
 namespace ancfnet {

@@ -13,10 +13,11 @@
 #include <vector>
 
 #include "ancfnet/analysis/momentum.hpp"
+#include "ancfnet/integrators/dynamic_solver.hpp"
 #include "ancfnet/model/model_builder.hpp"
 #include "ancfnet/model/rigid_body_kinematics.hpp"
-#include "ancfnet/solvers/dynamic_solver.hpp"
 #include "ancfnet/solvers/static_solver.hpp"
+#include "ancfnet/state/rigid_body_state.hpp"
 
 namespace ancfnet {
 namespace {

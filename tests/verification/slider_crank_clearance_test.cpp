@@ -15,9 +15,9 @@
 #include <numbers>
 #include <vector>
 
-#include "ancfnet/joints/clearance_joint_forces.hpp"
+#include "ancfnet/forces/clearance_joint_forces.hpp"
 #include "ancfnet/model/model_builder.hpp"
-#include "ancfnet/solvers/dynamic_solver.hpp"
+#include "ancfnet/integrators/dynamic_solver.hpp"
 
 namespace ancfnet {
 namespace {

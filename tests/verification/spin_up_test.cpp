@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "ancfnet/analysis/assumed_modes.hpp"
+#include "ancfnet/integrators/dynamic_solver.hpp"
 #include "ancfnet/model/model_builder.hpp"
-#include "ancfnet/solvers/dynamic_solver.hpp"
 
 namespace ancfnet {
 namespace {

@@ -9,8 +9,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "ancfnet/integrators/dynamic_solver.hpp"
 #include "ancfnet/model/model_builder.hpp"
-#include "ancfnet/solvers/dynamic_solver.hpp"
 
 namespace ancfnet {
 namespace {

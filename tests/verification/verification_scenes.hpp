@@ -5,8 +5,8 @@
 
 #include <optional>
 
+#include "ancfnet/integrators/dynamic_solver.hpp"
 #include "ancfnet/model/model_builder.hpp"
-#include "ancfnet/solvers/dynamic_solver.hpp"
 
 namespace ancfnet::verification {
 

@@ -1,9 +1,9 @@
 #include "ancfnet/analysis/energy_tracker.hpp"
 
-#include "ancfnet/assembly/body_forces.hpp"
-#include "ancfnet/assembly/link_forces.hpp"
+#include "ancfnet/forces/body_forces.hpp"
+#include "ancfnet/forces/link_forces.hpp"
 #include "ancfnet/forces/orbital_frame.hpp"
-#include "ancfnet/joints/clearance_joint_forces.hpp"
+#include "ancfnet/forces/clearance_joint_forces.hpp"
 
 namespace ancfnet {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "ancfnet/analysis/cable_tension.hpp"
-#include "ancfnet/assembly/link_forces.hpp"
+#include "ancfnet/forces/link_forces.hpp"
 
 namespace ancfnet {
 namespace {

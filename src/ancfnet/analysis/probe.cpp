@@ -5,9 +5,10 @@
 
 #include "ancfnet/analysis/cable_tension.hpp"
 #include "ancfnet/analysis/net_metrics.hpp"
-#include "ancfnet/assembly/link_forces.hpp"
-#include "ancfnet/joints/clearance_joint_forces.hpp"
+#include "ancfnet/forces/clearance_joint_forces.hpp"
+#include "ancfnet/forces/link_forces.hpp"
 #include "ancfnet/model/rigid_body_kinematics.hpp"
+#include "ancfnet/state/rigid_body_state.hpp"
 
 namespace ancfnet {
 

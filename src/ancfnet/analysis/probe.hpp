@@ -31,7 +31,7 @@ enum class ProbeQuantity {
   /// NAME.max_penetration: the active contacts (of one target, or all), see ContactProbeValues.
   kContact,
   /// NAME.ex/ey/ez, NAME.penetration, NAME.normal_force, NAME.friction_force,
-  /// NAME.friction_moment, NAME.mode of a clearance joint (joints/clearance_joint_forces.hpp):
+  /// NAME.friction_moment, NAME.mode of a clearance joint (forces/clearance_joint_forces.hpp):
   /// the eccentricity e of the journal relative to the bearing (m, world axes; in the joint's
   /// plane for a revolute joint: its orbit), δ = |e| − c (m, < 0 in free flight), F_n (N), |f_t|
   /// (N), the friction moment on the journal m_J (N m; its component along the axis for a

@@ -73,7 +73,7 @@ class SystemMatrix {
   void AddAttachmentBlock(Index attachment, int i, int j, const Matrix3d& block,
                           double scale = 1.0);
   /// Adds scale · block to the 3×3 block (i, j) of clearance joint `joint`, its blocks numbered
-  /// the journal anchor's, then the bearing anchor's (joints/joint_anchor.hpp).
+  /// the journal anchor's, then the bearing anchor's (forces/joint_anchor.hpp).
   void AddClearanceJointBlock(Index joint, int i, int j, const Matrix3d& block, double scale = 1.0);
   /// Adds scale · block to the 3×3 block of rows starting at coordinate `row`, columns at `col`
   /// (both inside one coupling group). Searches the pattern: for rare terms only.

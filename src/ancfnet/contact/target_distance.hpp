@@ -1,11 +1,11 @@
 #pragma once
-/// @file The narrow phase against a rigid target (model/contact_spec.hpp): the signed distance of
+/// @file The narrow phase against a rigid target (contact/contact_spec.hpp): the signed distance of
 /// a point to its surface, and the deepest point of a segment (a capsule's axis) in it, with the
 /// outward normal and its derivative at the closest point (docs/theory.md, "Capsule chains
 /// against rigid targets").
 
 #include "ancfnet/common/types.hpp"
-#include "ancfnet/model/contact_spec.hpp"
+#include "ancfnet/contact/contact_spec.hpp"
 
 namespace ancfnet {
 

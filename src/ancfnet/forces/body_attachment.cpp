@@ -40,9 +40,4 @@ BodyAttachmentResult CalcBodyAttachment(const BodyAttachmentInput& in, bool jaco
   return out;
 }
 
-double CalcFixedAttachmentStiffness(double reduced_mass, double time_step) {
-  const double omega = 10.0 / time_step;
-  return reduced_mass * omega * omega;
-}
-
 }  // namespace ancfnet

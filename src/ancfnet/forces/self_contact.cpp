@@ -7,7 +7,7 @@
 
 #include "ancfnet/assembly/system_matrix.hpp"
 #include "ancfnet/contact/distance/segment_segment.hpp"
-#include "ancfnet/contact/impact_speed.hpp"
+#include "ancfnet/forces/impact_speed.hpp"
 
 namespace ancfnet {
 namespace {

@@ -11,13 +11,13 @@
 #include <utility>
 #include <vector>
 
-#include "ancfnet/assembly/forces.hpp"
 #include "ancfnet/contact/broad_phase/uniform_grid.hpp"
 #include "ancfnet/contact/contact_pair_force.hpp"
 #include "ancfnet/contact/contact_point.hpp"
 #include "ancfnet/contact/distance/segment_segment.hpp"
-#include "ancfnet/contact/self_contact_primitives.hpp"
 #include "ancfnet/contact/self_pair_jacobian.hpp"
+#include "ancfnet/forces/forces.hpp"
+#include "ancfnet/forces/self_contact_primitives.hpp"
 #include "ancfnet/model/model.hpp"
 #include "ancfnet/state/state.hpp"
 #include "ancfnet/state/workspace.hpp"

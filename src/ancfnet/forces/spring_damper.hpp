@@ -4,7 +4,7 @@
 /// derivation is in docs/theory-connections.md.
 
 #include "ancfnet/common/types.hpp"
-#include "ancfnet/forces/connection_law.hpp"
+#include "ancfnet/elements/connection_law.hpp"
 
 namespace ancfnet {
 

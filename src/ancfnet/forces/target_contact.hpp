@@ -1,6 +1,6 @@
 #pragma once
 /// @file Contact forces between the model (cable inspection spheres or capsule chains,
-/// point-mass spheres) and its rigid targets (model/contact_spec.hpp): a normal law on the
+/// point-mass spheres) and its rigid targets (contact/contact_spec.hpp): a normal law on the
 /// penetration δ and its rate, regularised friction on the tangential slip, applied at the
 /// probe's point nearest the target and mapped to positions and slopes by Q = Sᵀ f, with the
 /// Jacobians an implicit integrator needs (docs/theory.md, "Contact with rigid targets" and
@@ -10,38 +10,19 @@
 #include <string>
 #include <vector>
 
-#include "ancfnet/assembly/forces.hpp"
 #include "ancfnet/contact/contact_pair_force.hpp"
 #include "ancfnet/contact/contact_point.hpp"
 #include "ancfnet/contact/segment_distance_bound.hpp"
 #include "ancfnet/contact/target_distance.hpp"
-#include "ancfnet/contact/target_pair_jacobian.hpp"
+#include "ancfnet/forces/forces.hpp"
+#include "ancfnet/forces/target_pair_jacobian.hpp"
+#include "ancfnet/model/contact_probes.hpp"
 #include "ancfnet/model/model.hpp"
 #include "ancfnet/model/rigid_body_kinematics.hpp"
 #include "ancfnet/state/state.hpp"
 #include "ancfnet/state/workspace.hpp"
 
 namespace ancfnet {
-
-/// A probe of a cable element: a capsule whose axis is the chord between the material points
-/// ξ₀ < ξ₁ of the deformed centre line, c(t) = (1 − t) r(ξ₀) + t r(ξ₁), or an inspection sphere
-/// (ξ₀ = ξ₁); or a point mass's sphere.
-struct ContactProbe {
-  Index element = -1;                  ///< cable element, or −1 for a point mass
-  Index point_mass = -1;               ///< point mass, or −1
-  double xi0 = 0.0, xi1 = 0.0;         ///< ξ ∈ [0, 1] of the axis' ends on the element
-  Vector4d shape0 = Vector4d::Zero();  ///< S₁ … S₄ at ξ₀ (r = Σ S_k e_k)
-  Vector4d shape1 = Vector4d::Zero();  ///< at ξ₁
-  double radius = 0.0;                 ///< m
-};
-
-/// The probes of the model in order: for each cable element its inspection spheres at
-/// ξ = (j + ½)/n (ContactSpec::TargetGeometry::kSpheres) or its capsules from ξ = j/n to
-/// (j + 1)/n (kCapsules), then one sphere per point mass. Empty without contact targets.
-std::vector<ContactProbe> MakeContactProbes(const Model& model);
-
-/// Number of (probe, target) pairs: the size of State::contact_history.
-Index CountContactPairs(const Model& model);
 
 class TargetContact {
  public:

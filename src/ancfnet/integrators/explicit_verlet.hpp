@@ -3,11 +3,11 @@
 /// once; for comparison with generalised-α. Conditionally stable: h < 2/ω_max.
 
 #include "ancfnet/analysis/energy_tracker.hpp"
-#include "ancfnet/assembly/forces.hpp"
-#include "ancfnet/forces/damping_model.hpp"
+#include "ancfnet/forces/forces.hpp"
 #include "ancfnet/forces/self_contact.hpp"
 #include "ancfnet/forces/target_contact.hpp"
 #include "ancfnet/integrators/step_outcome.hpp"
+#include "ancfnet/solvers/damping_model.hpp"
 #include "ancfnet/solvers/linear_solver.hpp"
 #include "ancfnet/state/state.hpp"
 

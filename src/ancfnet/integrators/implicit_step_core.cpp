@@ -3,8 +3,9 @@
 #include <cmath>
 
 #include "ancfnet/integrators/initial_acceleration.hpp"
-#include "ancfnet/joints/clearance_joint_forces.hpp"
+#include "ancfnet/forces/clearance_joint_forces.hpp"
 #include "ancfnet/model/rigid_body_kinematics.hpp"
+#include "ancfnet/state/rigid_body_state.hpp"
 
 namespace ancfnet {
 

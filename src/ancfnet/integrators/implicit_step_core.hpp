@@ -3,11 +3,11 @@
 /// the unknowns, scratch, the full mass matrix, the iteration matrix and its Newton solver, and
 /// the state at t_n while a step is attempted. Each integrator keeps only its own update formulas.
 
-#include "ancfnet/assembly/forces.hpp"
-#include "ancfnet/forces/damping_model.hpp"
+#include "ancfnet/forces/forces.hpp"
 #include "ancfnet/forces/self_contact.hpp"
 #include "ancfnet/forces/target_contact.hpp"
 #include "ancfnet/solvers/analysis_settings.hpp"
+#include "ancfnet/solvers/damping_model.hpp"
 #include "ancfnet/solvers/newton.hpp"
 #include "ancfnet/solvers/solve_result.hpp"
 #include "ancfnet/state/state.hpp"

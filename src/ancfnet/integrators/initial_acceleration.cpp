@@ -1,7 +1,7 @@
 #include "ancfnet/integrators/initial_acceleration.hpp"
 
-#include "ancfnet/assembly/forces.hpp"
 #include "ancfnet/assembly/system_matrix.hpp"
+#include "ancfnet/forces/forces.hpp"
 #include "ancfnet/solvers/linear_solver.hpp"
 
 namespace ancfnet {

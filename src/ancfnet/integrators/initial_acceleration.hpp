@@ -2,8 +2,8 @@
 /// @file The consistent initial acceleration of an implicit scheme.
 
 #include "ancfnet/assembly/dof_map.hpp"
-#include "ancfnet/forces/damping_model.hpp"
 #include "ancfnet/model/model.hpp"
+#include "ancfnet/solvers/damping_model.hpp"
 #include "ancfnet/state/state.hpp"
 #include "ancfnet/state/workspace.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-/// @file Reads one item of a scene's `joints` list (joints/clearance_joint_spec.hpp):
+/// @file Reads one item of a scene's `joints` list (model/clearance_joint_spec.hpp):
 ///   {name, type: revolute_clearance | spherical_clearance, journal: ANCHOR, bearing: ANCHOR,
 ///    clearance, journal_radius, axis (revolute; default [0, 0, 1]), contact: LAW,
 ///    friction: FRICTION}

@@ -1,5 +1,5 @@
 #pragma once
-/// @file Reads the `contact` map of a scene (model/contact_spec.hpp):
+/// @file Reads the `contact` map of a scene (contact/contact_spec.hpp):
 ///   law: {type: linear, stiffness, damping} | {type: hertz, stiffness, exponent}
 ///      | {type: hunt_crossley | lankarani_nikravesh | flores | gonthier | carvalho_martins,
 ///         stiffness, restitution, exponent, min_approach_speed}

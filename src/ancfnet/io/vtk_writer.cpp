@@ -10,6 +10,7 @@
 #include "ancfnet/elements/ancf_cable.hpp"
 #include "ancfnet/elements/hermite_shape.hpp"
 #include "ancfnet/model/rigid_body_kinematics.hpp"
+#include "ancfnet/state/rigid_body_state.hpp"
 
 namespace ancfnet {
 namespace {

@@ -2,7 +2,7 @@
 /// @file Damping models of a whole model, beyond the material's Kelvin–Voigt damping: Rayleigh
 /// damping C = α M + β K₀ and the generic ("modal") damping matrix built from measured modal
 /// damping ratios, C = M Φ diag(2 ζ_i ω_i) Φᵀ M (Adhikari 2006; the seed paper's generic damping).
-/// The matrices themselves are made by forces/damping_model.hpp.
+/// The matrices themselves are made by solvers/damping_model.hpp.
 
 #include <utility>
 #include <vector>

@@ -9,10 +9,10 @@
 #include <vector>
 
 #include "ancfnet/common/types.hpp"
+#include "ancfnet/contact/contact_spec.hpp"
 #include "ancfnet/elements/ancf_cable.hpp"
-#include "ancfnet/forces/connection_law.hpp"
-#include "ancfnet/joints/clearance_joint.hpp"
-#include "ancfnet/model/contact_spec.hpp"
+#include "ancfnet/elements/connection_law.hpp"
+#include "ancfnet/model/clearance_joint.hpp"
 #include "ancfnet/model/damping_spec.hpp"
 #include "ancfnet/model/material.hpp"
 #include "ancfnet/model/prescribed_motion.hpp"
@@ -144,7 +144,7 @@ class Model {
   /// Rigid bodies (model/rigid_body.hpp) and their attachments.
   const std::vector<RigidBody>& rigid_bodies() const { return rigid_bodies_; }
   const std::vector<BodyAttachment>& body_attachments() const { return body_attachments_; }
-  /// Revolute and spherical clearance joints (joints/clearance_joint.hpp).
+  /// Revolute and spherical clearance joints (model/clearance_joint.hpp).
   const std::vector<ClearanceJoint>& clearance_joints() const { return clearance_joints_; }
   /// True when a rigid body moves freely (static and modal analyses refuse such models).
   bool has_free_bodies() const;
@@ -156,7 +156,7 @@ class Model {
   /// Mean motion n (rad/s) of the target's circular orbit when the model is written in its
   /// Hill frame (forces/orbital_frame.hpp); empty for an inertial frame.
   const std::optional<double>& orbital_frame() const { return orbital_frame_; }
-  /// Rayleigh and modal damping of the whole model (forces/damping_model.hpp).
+  /// Rayleigh and modal damping of the whole model (solvers/damping_model.hpp).
   const DampingSpec& damping() const { return damping_; }
   /// Contact with rigid targets (forces/target_contact.hpp).
   const ContactSpec& contact() const { return contact_; }

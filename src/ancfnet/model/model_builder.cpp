@@ -7,7 +7,7 @@
 #include <utility>
 
 #include "ancfnet/common/error.hpp"
-#include "ancfnet/forces/body_attachment.hpp"
+#include "ancfnet/model/fixed_attachment_stiffness.hpp"
 #include "ancfnet/model/rigid_body_kinematics.hpp"
 
 namespace ancfnet {

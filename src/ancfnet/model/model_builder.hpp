@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "ancfnet/joints/clearance_joint_spec.hpp"
+#include "ancfnet/model/clearance_joint_spec.hpp"
 #include "ancfnet/model/model.hpp"
 
 namespace ancfnet {
@@ -107,7 +107,7 @@ class ModelBuilder {
   Index AddRigidBody(const RigidBodySpec& spec);
   /// Ties a point to a body point (BodyAttachmentSpec).
   void AddBodyAttachment(const BodyAttachmentSpec& spec);
-  /// Adds a revolute or spherical clearance joint (joints/clearance_joint_spec.hpp): a unique
+  /// Adds a revolute or spherical clearance joint (model/clearance_joint_spec.hpp): a unique
   /// name, 0 < c < R_J, a non-zero axis, a valid law and a regularised friction law, anchors that
   /// name existing bodies, point masses or cable points, not both the ground. Bodies first.
   void AddClearanceJoint(const ClearanceJointSpec& spec);

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "ancfnet/forces/connection_law.hpp"
+#include "ancfnet/elements/connection_law.hpp"
 #include "ancfnet/model/model_builder.hpp"
 #include "ancfnet/model/net_tether.hpp"
 #include "ancfnet/model/net_topology.hpp"

@@ -2,9 +2,6 @@
 
 #include <cmath>
 
-#include "ancfnet/model/model.hpp"
-#include "ancfnet/state/state.hpp"
-
 namespace ancfnet {
 
 Matrix3d Skew(const Vector3d& a) {
@@ -37,10 +34,6 @@ BodyVelocity CalcBodyVelocity(const RigidBody& body, const VectorXd& v) {
   return {v.segment<3>(body.position_dof()), v.segment<3>(body.rotation_dof())};
 }
 
-BodyPose CalcBodyPose(const Model& model, const State& state, Index b) {
-  return CalcBodyPose(model.rigid_bodies()[b], state.q, state.body_rotation[b]);
-}
-
 Matrix3x6d CalcPointVelocityMap(const BodyPose& pose, const Vector3d& p_W) {
   Matrix3x6d g;
   g.leftCols<3>().setIdentity();
@@ -52,19 +45,6 @@ Vector6d CalcGeneralizedForce(const BodyPose& pose, const Vector3d& p_W, const V
   Vector6d q;
   q << f_W, pose.R_WB.transpose() * (p_W - pose.p_WB).cross(f_W);
   return q;
-}
-
-void RebaseBodyRotations(const Model& model, State* state) {
-  const auto& bodies = model.rigid_bodies();
-  for (std::size_t b = 0; b < bodies.size(); ++b) {
-    if (bodies[b].motion != BodyMotion::kFree) continue;
-    auto psi = state->q.segment<3>(bodies[b].rotation_dof());
-    // Through a unit quaternion, so that round-off does not accumulate in RᵀR = I.
-    state->body_rotation[b] = Eigen::Quaterniond(state->body_rotation[b] * ExpRotation(psi))
-                                  .normalized()
-                                  .toRotationMatrix();
-    psi.setZero();
-  }
 }
 
 }  // namespace ancfnet

@@ -13,9 +13,6 @@
 
 namespace ancfnet {
 
-class Model;
-struct State;
-
 using Vector6d = Eigen::Matrix<double, 6, 1>;
 using Matrix3x6d = Eigen::Matrix<double, 3, 6>;
 
@@ -43,16 +40,10 @@ struct BodyVelocity {
 BodyPose CalcBodyPose(const RigidBody& body, const VectorXd& q, const Matrix3d& rotation_ref);
 /// Velocities from v.
 BodyVelocity CalcBodyVelocity(const RigidBody& body, const VectorXd& v);
-/// Pose of body `b` of the model in `state`.
-BodyPose CalcBodyPose(const Model& model, const State& state, Index b);
 
 /// G = [I₃, −(p − x_WB)~ R_WB] of a world point p on the body: ṗ = G (ẋ_WB, ω_B).
 Matrix3x6d CalcPointVelocityMap(const BodyPose& pose, const Vector3d& p_W);
 /// Gᵀ f = (f, R_WBᵀ ((p − x_WB) × f)): the generalised force of a world force f (N) at p.
 Vector6d CalcGeneralizedForce(const BodyPose& pose, const Vector3d& p_W, const Vector3d& f_W);
-
-/// After an accepted step: R_ref ← R_ref exp(ψ̃), ψ ← 0 for every free body (ω, ω̇ are
-/// body-frame and need no transport). Fixed and prescribed bodies keep R_ref = R_WB(0).
-void RebaseBodyRotations(const Model& model, State* state);
 
 }  // namespace ancfnet

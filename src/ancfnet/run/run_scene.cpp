@@ -10,12 +10,12 @@
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/forces/self_contact.hpp"
 #include "ancfnet/forces/target_contact.hpp"
+#include "ancfnet/integrators/dynamic_solver.hpp"
 #include "ancfnet/io/contact_vtk_writer.hpp"
 #include "ancfnet/io/output_directory.hpp"
 #include "ancfnet/io/probe_csv_writer.hpp"
 #include "ancfnet/io/vtk_writer.hpp"
 #include "ancfnet/run/progress_reporter.hpp"
-#include "ancfnet/solvers/dynamic_solver.hpp"
 #include "ancfnet/solvers/static_solver.hpp"
 
 namespace ancfnet {

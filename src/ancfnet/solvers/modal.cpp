@@ -9,9 +9,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "ancfnet/assembly/forces.hpp"
 #include "ancfnet/common/error.hpp"
-#include "ancfnet/forces/damping_model.hpp"
+#include "ancfnet/forces/forces.hpp"
+#include "ancfnet/solvers/damping_model.hpp"
 #include "ancfnet/solvers/linear_solver.hpp"
 
 namespace ancfnet {

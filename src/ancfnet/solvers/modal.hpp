@@ -41,7 +41,7 @@ struct ModalResult {
 
 /// The undamped modes alone: ω² ascending (rigid ones 0), M-orthonormal shapes over all
 /// coordinates (zero on the fixed ones), rigid flags. Used by CalcModes and by the modal damping
-/// matrix (forces/damping_model.hpp).
+/// matrix (solvers/damping_model.hpp).
 struct UndampedModes {
   bool converged = false;
   std::string message;

@@ -5,8 +5,8 @@
 #include <cmath>
 
 #include "ancfnet/analysis/energy_tracker.hpp"
-#include "ancfnet/assembly/forces.hpp"
 #include "ancfnet/common/error.hpp"
+#include "ancfnet/forces/forces.hpp"
 #include "ancfnet/solvers/newton.hpp"
 
 namespace ancfnet {

@@ -1,6 +1,6 @@
 #include "ancfnet/state/state.hpp"
 
-#include "ancfnet/forces/target_contact.hpp"
+#include "ancfnet/model/contact_probes.hpp"
 #include "ancfnet/model/model.hpp"
 
 namespace ancfnet {

@@ -44,7 +44,7 @@ struct State {
   std::vector<ContactPairHistory> contact_history;
   /// Sorted by (first, second).
   std::vector<SelfContactPairHistory> self_contact_history;
-  /// Per clearance joint: its contact's impact speed (joints/clearance_joint_forces.hpp).
+  /// Per clearance joint: its contact's impact speed (forces/clearance_joint_forces.hpp).
   std::vector<ContactPairHistory> joint_history;
   /// Per rigid body: its reference orientation R_ref, R_WB = R_ref exp(ψ̃) with ψ the body's
   /// rotation coordinates (model/rigid_body.hpp). R_WB(0) at t = 0; the integrators rebase it

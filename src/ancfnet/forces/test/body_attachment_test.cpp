@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "ancfnet/forces/gyroscopic_force.hpp"
+#include "ancfnet/model/fixed_attachment_stiffness.hpp"
 
 namespace ancfnet {
 namespace {

@@ -9,8 +9,8 @@
 #include <cmath>
 
 #include "ancfnet/common/error.hpp"
+#include "ancfnet/integrators/dynamic_solver.hpp"
 #include "ancfnet/model/net_builder.hpp"
-#include "ancfnet/solvers/dynamic_solver.hpp"
 
 namespace ancfnet {
 namespace {

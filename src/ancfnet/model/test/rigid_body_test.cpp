@@ -6,6 +6,7 @@
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/model/model_builder.hpp"
 #include "ancfnet/model/rigid_body_kinematics.hpp"
+#include "ancfnet/state/rigid_body_state.hpp"
 #include "ancfnet/state/state.hpp"
 
 namespace ancfnet {

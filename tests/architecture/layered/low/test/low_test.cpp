@@ -1,0 +1,2 @@
+// Unit tests are exempt: they may use any part.
+#include "ancfnet/high/high.hpp"
