@@ -1,9 +1,9 @@
 #include "ancfnet/analysis/energy_tracker.hpp"
 
 #include "ancfnet/forces/body_forces.hpp"
+#include "ancfnet/forces/clearance_joint_forces.hpp"
 #include "ancfnet/forces/link_forces.hpp"
 #include "ancfnet/forces/orbital_frame.hpp"
-#include "ancfnet/forces/clearance_joint_forces.hpp"
 
 namespace ancfnet {
 
@@ -31,6 +31,7 @@ EnergyTracker::EnergyTracker(const Model& model, const Workspace& ws, const Stat
     : t_(state.t),
       q_(state.q),
       applied_(ws.applied_force),
+      drive_(ws.drive_force),
       load_factor_(load_factor),
       quadrature_(quadrature),
       v_(state.v),
@@ -55,7 +56,9 @@ void EnergyTracker::Advance(const Model& model, const Workspace& ws, const State
   double work = 0.0;
   double dissipated = 0.0;
   const auto add = [&](Index i, double dq) {
-    work += (w_then * applied_[i] + w_now * ws.applied_force[i]) * dq;
+    work +=
+        (w_then * (applied_[i] + drive_[i]) + w_now * (ws.applied_force[i] + ws.drive_force[i])) *
+        dq;
     dissipated += (w_then * viscous_[i] + w_now * ws.viscous_force[i]) * dq;
   };
   for (Index i = 0; i < q.size(); ++i) add(i, q[i] - q_[i]);
@@ -79,6 +82,7 @@ void EnergyTracker::Advance(const Model& model, const Workspace& ws, const State
   v_ = state.v;
   load_factor_ = load_factor;
   applied_ = ws.applied_force;
+  drive_ = ws.drive_force;
   viscous_ = ws.viscous_force;
 }
 
@@ -86,6 +90,7 @@ void EnergyTracker::Release(const Model& model, const Workspace& ws, double rele
   account_.dissipated += released;
   account_.strain = CalcStrainEnergy(model, ws, q_);
   applied_ = ws.applied_force;
+  drive_ = ws.drive_force;
   viscous_ = ws.viscous_force;
 }
 

@@ -30,7 +30,8 @@ enum class EnergyQuadrature {
   kMidpoint,
 };
 
-/// Accumulates the work of the applied loads W = ∫ Q_applied · dq and the energy dissipated by
+/// Accumulates the work of the applied loads and of the prescribed motion,
+/// W = ∫ (Q_applied + Q_drive) · dq (Workspace::drive_force), and the energy dissipated by
 /// material damping D = ∫ q̇ · Q_visc dt over each step (EnergyQuadrature), and evaluates the
 /// state energies. Gravity enters through its potential V = −λ Q_gᵀ q (Q_g constant); when λ
 /// grows (static load steps) the work −∫ Q_gᵀ q dλ of raising it is added to W.
@@ -53,6 +54,7 @@ class EnergyTracker {
   double t_ = 0.0;
   VectorXd q_;
   VectorXd applied_;
+  VectorXd drive_;  // Workspace::drive_force at the last state
   double load_factor_ = 1.0;
   EnergyQuadrature quadrature_;
   VectorXd v_;

@@ -98,6 +98,7 @@ GeneralizedAlphaIntegrator::GeneralizedAlphaIntegrator(const Model& model,
 
 bool GeneralizedAlphaIntegrator::Initialize(State* state) {
   if (!core_.Initialize(state)) return false;
+  core_.CalcDriveForce(*state);
   a_bar_ = state->a;
   return true;
 }
@@ -142,8 +143,9 @@ StepOutcome GeneralizedAlphaIntegrator::Step(double h, State* state) {
         ((1.0 - c.alpha_f) * state->a[i] + c.alpha_f * previous.a[i] - c.alpha_m * a_bar_[i]) /
         (1.0 - c.alpha_m);
   core_.AcceptStep(state);
-  // Forces at the accepted state, for the energy account.
+  // Forces at the accepted state, and the drive's, for the energy account.
   core_.CalcForces(state->q, state->v);
+  core_.CalcDriveForce(*state);
   return outcome;
 }
 

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "ancfnet/integrators/initial_acceleration.hpp"
 #include "ancfnet/forces/clearance_joint_forces.hpp"
+#include "ancfnet/integrators/initial_acceleration.hpp"
 #include "ancfnet/model/rigid_body_kinematics.hpp"
 #include "ancfnet/state/rigid_body_state.hpp"
 
@@ -121,6 +121,14 @@ void ImplicitStepCore::AcceptStep(State* state) {
   ws_.joint_history = state->joint_history;
   RebaseBodyRotations(model_, state);
   ws_.body_rotation = state->body_rotation;
+}
+
+void ImplicitStepCore::CalcDriveForce(const State& state) {
+  const std::vector<Index>& prescribed = dofs_.prescribed_coordinates();
+  if (prescribed.empty()) return;
+  residual_full_.noalias() = mass_ * state.a;
+  for (Index i : prescribed)
+    ws_.drive_force[i] = residual_full_[i] + ws_.internal_force[i] - ws_.external_force[i];
 }
 
 double ImplicitStepCore::EnergyScale(const VectorXd& q, const VectorXd& v) const {

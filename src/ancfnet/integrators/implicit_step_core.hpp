@@ -36,6 +36,9 @@ class ImplicitStepCore {
   /// After a converged step: the contact history at the new state; the bodies' reference
   /// orientations rebased (R_ref ← R_ref exp(ψ̃), ψ ← 0), in the state and in ws().
   void AcceptStep(State* state);
+  /// ws().drive_force at `state`, from the forces now in ws() (evaluated at that state) and the
+  /// state's acceleration, which must satisfy M a = Q_ext − Q_int at the free coordinates.
+  void CalcDriveForce(const State& state);
   /// Newton iterations on `problem` with the shared solver.
   template <class Problem>
   NewtonResult Solve(Problem& problem) {

@@ -16,8 +16,8 @@ struct Workspace {
 
   // Constant, filled by the constructor.
   std::vector<Matrix12d> element_mass;  ///< consistent mass matrix of each element
-  VectorXd gravity_force;  ///< ∫ ρA Sᵀ g dx, m g of point masses and free bodies (N)
-  VectorXd distributed_force;           ///< ∫ Sᵀ w dx of the distributed loads (N)
+  VectorXd gravity_force;      ///< ∫ ρA Sᵀ g dx, m g of point masses and free bodies (N)
+  VectorXd distributed_force;  ///< ∫ Sᵀ w dx of the distributed loads (N)
 
   // Per element, filled by CalcInternalForces / AssembleIterationMatrix.
   std::vector<Vector12d> element_force;
@@ -42,6 +42,10 @@ struct Workspace {
   VectorXd viscous_force;   ///< its Kelvin–Voigt part: CalcInternalForces
   VectorXd applied_force;   ///< loads other than gravity at the load factor: CalcExternalForces
   VectorXd external_force;  ///< applied_force + λ · gravity_force: CalcExternalForces
+  /// The force the prescribed motion applies to its coordinates, (M a + Q_int − Q_ext) there and
+  /// 0 elsewhere, at the last accepted state: generalised-α (ImplicitStepCore::CalcDriveForce).
+  /// Its work is part of the energy account's W.
+  VectorXd drive_force;
 };
 
 }  // namespace ancfnet
