@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "ancfnet/common/quadrature.hpp"
+#include "ancfnet/common/skew.hpp"
 #include "ancfnet/elements/hermite_shape.hpp"
 #include "ancfnet/elements/rope_law.hpp"
 
@@ -17,12 +18,6 @@ using Matrix12x3d = Eigen::Matrix<double, 12, 3>;
 // the curvature vector (near straight) to the rate of its magnitude (bent). A bent element in
 // rigid rotation dissipates a fraction κ_ε²/(κ² + κ_ε²) of what the vector rate would give.
 constexpr double kCurvatureBlend = 1e-3;
-
-Matrix3d Skew(const Vector3d& v) {
-  Matrix3d m;
-  m << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
-  return m;
-}
 
 // K += scale · (u vᵀ ⊗ X): the 12×12 matrix whose 3×3 block (j, l) is u_j v_l X. Every term of
 // the cable's Jacobians has this Kronecker form because S = [S1 I, …, S4 I].

@@ -9,6 +9,7 @@
 
 #include <cmath>
 
+#include "ancfnet/common/skew.hpp"
 #include "ancfnet/common/types.hpp"
 
 namespace ancfnet {
@@ -70,13 +71,6 @@ inline StrainJet HalfStretchJet(const BeamLocalVector& u, int a, bool with_hessi
   return j;
 }
 
-/// The skew matrix [v]× with [v]× w = v × w.
-inline Matrix3d SkewMatrix(const Vector3d& v) {
-  Matrix3d m;
-  m << 0.0, -v.z(), v.y(), v.z(), 0.0, -v.x(), -v.y(), v.x(), 0.0;
-  return m;
-}
-
 /// The triple product a·(b × c) of three distinct blocks: ∇ = [b×c, c×a, a×b],
 /// ∇²: (a,b) = −[c]×, (a,c) = [b]×, (b,c) = −[a]× and their transposes.
 inline StrainJet TripleJet(const BeamLocalVector& u, int a, int b, int c, bool with_hessian) {
@@ -93,9 +87,9 @@ inline StrainJet TripleJet(const BeamLocalVector& u, int a, int b, int c, bool w
       j.hess.block<3, 3>(3 * p, 3 * q) = m;
       j.hess.block<3, 3>(3 * q, 3 * p) = m.transpose();
     };
-    set_pair(a, b, -SkewMatrix(uc));
-    set_pair(a, c, SkewMatrix(ub));
-    set_pair(b, c, -SkewMatrix(ua));
+    set_pair(a, b, -Skew(uc));
+    set_pair(a, c, Skew(ub));
+    set_pair(b, c, -Skew(ua));
   }
   return j;
 }

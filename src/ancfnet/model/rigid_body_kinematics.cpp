@@ -4,12 +4,6 @@
 
 namespace ancfnet {
 
-Matrix3d Skew(const Vector3d& a) {
-  Matrix3d s;
-  s << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
-  return s;
-}
-
 Matrix3d ExpRotation(const Vector3d& psi) {
   const double theta2 = psi.squaredNorm();
   const Matrix3d k = Skew(psi);

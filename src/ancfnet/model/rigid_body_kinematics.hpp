@@ -8,6 +8,7 @@
 
 #include <vector>
 
+#include "ancfnet/common/skew.hpp"
 #include "ancfnet/common/types.hpp"
 #include "ancfnet/model/rigid_body.hpp"
 
@@ -15,9 +16,6 @@ namespace ancfnet {
 
 using Vector6d = Eigen::Matrix<double, 6, 1>;
 using Matrix3x6d = Eigen::Matrix<double, 3, 6>;
-
-/// The cross-product matrix ã of a, ã b = a × b.
-Matrix3d Skew(const Vector3d& a);
 
 /// Rodrigues' formula exp(ψ̃) = I + (sin θ/θ) ψ̃ + ((1 − cos θ)/θ²) ψ̃², θ = |ψ| (series near 0).
 Matrix3d ExpRotation(const Vector3d& psi);
