@@ -74,8 +74,13 @@ TargetContact::TargetAxis TargetContact::InTargetFrame(const Frame& frame, const
 TargetContact::ProbePoint TargetContact::FindProbePoint(const ContactTarget& target,
                                                         const Frame& frame,
                                                         const Axis& axis) const {
+  return FindProbePoint(target, frame, axis, InTargetFrame(frame, axis));
+}
+
+TargetContact::ProbePoint TargetContact::FindProbePoint(const ContactTarget& target,
+                                                        const Frame& frame, const Axis& axis,
+                                                        const TargetAxis& ends) const {
   ProbePoint point;
-  const TargetAxis ends = InTargetFrame(frame, axis);
   SegmentTargetDistance d = CalcSegmentTargetDistance(target, ends.x0, ends.x1);
   if (frame.body >= 0) {
     // n = R_WB n_B, ∂n/∂x = R_WB H_B R_WBᵀ.
@@ -98,7 +103,7 @@ std::optional<TargetContact::ProbePoint> TargetContact::FindProbePointWithin(
   const TargetAxis ends = InTargetFrame(frame, axis);
   SegmentDistanceBound& bound = distance_bounds_[pair];
   if (bound.LowerBound(ends.x0, ends.x1) > reach) return std::nullopt;
-  ProbePoint point = FindProbePoint(target, frame, axis);
+  ProbePoint point = FindProbePoint(target, frame, axis, ends);
   // A capsule's minimum over a mesh is searched on a few intervals and may be a local one: its
   // distance is no bound, and such pairs are always searched.
   const bool global_minimum = ends.x0 == ends.x1 || target.kind != ContactTarget::Kind::kMesh;

@@ -122,6 +122,9 @@ class TargetContact {
     Vector3d x0, x1;
   };
   static TargetAxis InTargetFrame(const Frame& frame, const Axis& axis);
+  // FindProbePoint with the axis' ends in the target's frame already found.
+  ProbePoint FindProbePoint(const ContactTarget& target, const Frame& frame, const Axis& axis,
+                            const TargetAxis& ends) const;
   // FindProbePoint for the (probe, target) pair `pair`, or nothing when its distance bound
   // (distance_bounds_) shows it farther than `reach` (m) from the target; updates the bound.
   std::optional<ProbePoint> FindProbePointWithin(std::size_t pair, const ContactTarget& target,
