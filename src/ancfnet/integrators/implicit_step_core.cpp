@@ -17,7 +17,7 @@ ImplicitStepCore::ImplicitStepCore(const Model& model, const DynamicSettings& se
       ws_(model),
       dofs_(DofMap::FreeCoordinates(model)),
       iteration_matrix_(model, dofs_),
-      newton_(settings.newton, settings.jacobian_update, /*line_search=*/false),
+      newton_(settings.newton, settings.jacobian_update),
       newton_settings_(settings.newton),
       smallest_step_(settings.smallest_step()),
       residual_full_(model.num_dofs()) {

@@ -13,16 +13,16 @@ void ReadNewtonSettings(const YamlMap& map, NewtonSettings* newton) {
   if (auto v = map.Find("relative_tolerance")) newton->relative_tolerance = v->AsPositive();
   if (auto v = map.Find("absolute_tolerance")) newton->absolute_tolerance = v->AsPositive();
   if (auto v = map.Find("energy_tolerance")) newton->energy_tolerance = v->AsPositive();
+  if (auto v = map.Find("line_search")) {
+    newton->line_search = v->AsEnum<LineSearchMode>({{"auto", LineSearchMode::kAuto},
+                                                     {"always", LineSearchMode::kAlways},
+                                                     {"never", LineSearchMode::kNever}});
+  }
 }
 
 void ReadStaticSettings(const YamlMap& map, StaticSettings* statics) {
   if (auto v = map.Find("load_steps")) statics->load_steps = v->AsInt(1);
   if (auto v = map.Find("max_step_cuts")) statics->max_step_cuts = v->AsInt(0);
-  if (auto v = map.Find("line_search")) {
-    statics->line_search = v->AsEnum<LineSearchMode>({{"auto", LineSearchMode::kAuto},
-                                                      {"always", LineSearchMode::kAlways},
-                                                      {"never", LineSearchMode::kNever}});
-  }
   ReadNewtonSettings(map, &statics->newton);
 }
 

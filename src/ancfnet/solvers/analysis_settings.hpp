@@ -6,6 +6,14 @@
 
 namespace ancfnet {
 
+/// When Newton steps are damped (Deuflhard's natural monotonicity test, NewtonSolver).
+enum class LineSearchMode {
+  kAuto,    ///< plain Newton first; a load increment or time step it fails on is retried from
+            ///< its start with damped steps before the increment or step is cut
+  kAlways,  ///< every step damped when it does not contract
+  kNever,   ///< plain Newton; failures go straight to step cutting
+};
+
 /// Convergence of Newton iterations: converged when the weighted RMS norm of the last increment,
 /// √(mean_i (Δx_i / (atol + rtol |x_i|))²), is ≤ 1 (the error norm of Hairer & Wanner 1996, II.4)
 /// and the energy of the last correction |Δqᵀ R| (J: the work of the residual force R over the
@@ -18,6 +26,7 @@ struct NewtonSettings {
   double relative_tolerance = 1e-6;  ///< rtol (dimensionless)
   double absolute_tolerance = 1e-8;  ///< atol (in the unit of the coordinates, m or 1)
   double energy_tolerance = 1e-6;    ///< η_E (dimensionless)
+  LineSearchMode line_search = LineSearchMode::kAuto;
 };
 
 /// When the iteration matrix is recomputed and factorised.
@@ -56,17 +65,9 @@ struct DynamicSettings {
   double smallest_step() const { return min_time_step > 0.0 ? min_time_step : time_step / 1024.0; }
 };
 
-/// When the static solver damps Newton steps (Deuflhard's natural monotonicity test).
-enum class LineSearchMode {
-  kAuto,    ///< plain Newton first; an increment it fails on is retried damped before a cut
-  kAlways,  ///< every step damped when it does not contract
-  kNever,   ///< plain Newton; failures go straight to step cutting
-};
-
 struct StaticSettings {
   int load_steps = 1;      ///< equal load increments to reach the full load, ≥ 1
   int max_step_cuts = 12;  ///< halvings of a load increment before giving up
-  LineSearchMode line_search = LineSearchMode::kAuto;
   NewtonSettings newton{.max_iterations = 40};
 };
 

@@ -30,15 +30,15 @@ struct NewtonResult {
 
 class NewtonSolver {
  public:
-  NewtonSolver(const NewtonSettings& settings, JacobianUpdate update, bool line_search,
+  NewtonSolver(const NewtonSettings& settings, JacobianUpdate update,
                LinearSolverType linear_solver = LinearSolverType::kKlu);
 
   /// Iterates from the problem's initial guess. With a stale Jacobian that fails, retries once
-  /// from the initial guess with a fresh Jacobian at every iteration.
+  /// from the initial guess with a fresh Jacobian at every iteration; with
+  /// LineSearchMode::kAuto, an attempt with plain steps that fails is retried once more from the
+  /// initial guess with damped steps and a fresh Jacobian at every iteration.
   template <class Problem>
   NewtonResult Solve(Problem& problem);
-
-  void set_line_search(bool line_search) { line_search_ = line_search; }
 
   /// Marks the stored factorisation as stale (e.g. after a change of time step).
   void InvalidateJacobian() {
@@ -53,7 +53,7 @@ class NewtonSolver {
 
  private:
   template <class Problem>
-  NewtonResult Iterate(Problem& problem, bool force_refresh);
+  NewtonResult Iterate(Problem& problem, bool force_refresh, bool damped);
   template <class Problem>
   bool Refresh(Problem& problem, NewtonResult* result);
   template <class Problem>
@@ -61,7 +61,6 @@ class NewtonSolver {
 
   NewtonSettings settings_;
   JacobianUpdate update_;
-  bool line_search_;
   SparseLinearSolver linear_solver_;
   bool has_factorization_ = false;
   bool jacobian_fresh_ = false;  // factorised at the current iterate

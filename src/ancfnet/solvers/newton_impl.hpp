@@ -14,22 +14,32 @@ inline constexpr int kSlowConvergenceIterations = 4;
 inline constexpr double kRoundingNorm = 1e-8;
 
 inline NewtonSolver::NewtonSolver(const NewtonSettings& settings, JacobianUpdate update,
-                                  bool line_search, LinearSolverType linear_solver)
-    : settings_(settings),
-      update_(update),
-      line_search_(line_search),
-      linear_solver_(linear_solver) {}
+                                  LinearSolverType linear_solver)
+    : settings_(settings), update_(update), linear_solver_(linear_solver) {}
 
 template <class Problem>
 NewtonResult NewtonSolver::Solve(Problem& problem) {
-  const bool stale_allowed = update_ != JacobianUpdate::kEveryIteration;
-  NewtonResult result = Iterate(problem, /*force_refresh=*/false);
-  if (result.converged || !stale_allowed) return result;
-  problem.Reset();
-  NewtonResult retry = Iterate(problem, /*force_refresh=*/true);
-  retry.iterations += result.iterations;
-  retry.jacobian_updates += result.jacobian_updates;
-  return retry;
+  const bool damped = settings_.line_search == LineSearchMode::kAlways;
+  NewtonResult result = Iterate(problem, /*force_refresh=*/false, damped);
+  // Each retry starts again from the initial guess; the counts add up over the attempts, and a
+  // failed damped retry reports why the plain attempt failed too.
+  auto retry = [&](bool retry_damped) {
+    problem.Reset();
+    const NewtonResult again = Iterate(problem, /*force_refresh=*/true, retry_damped);
+    const std::string failure =
+        again.converged || retry_damped == damped
+            ? again.failure
+            : result.failure + "; retried with damped steps: " + again.failure;
+    result = {again.converged, result.iterations + again.iterations,
+              result.jacobian_updates + again.jacobian_updates, failure};
+  };
+  // A stale Jacobian may be what failed.
+  if (!result.converged && update_ != JacobianUpdate::kEveryIteration) retry(damped);
+  // Plain Newton is fastest when it converges; damping is the fallback before a cut, for
+  // residuals whose curvature outruns the full step (e.g. regularised friction over a small
+  // sliding speed at a small time step).
+  if (!result.converged && settings_.line_search == LineSearchMode::kAuto) retry(true);
+  return result;
 }
 
 template <class Problem>
@@ -65,7 +75,7 @@ double NewtonSolver::LineSearch(Problem& problem, double increment_norm) {
 }
 
 template <class Problem>
-NewtonResult NewtonSolver::Iterate(Problem& problem, bool force_refresh) {
+NewtonResult NewtonSolver::Iterate(Problem& problem, bool force_refresh, bool damped) {
   NewtonResult result;
   const bool every_iteration = force_refresh || update_ == JacobianUpdate::kEveryIteration;
   // Adaptive reuse: an old Jacobian that needed many iterations last time is renewed at once.
@@ -101,7 +111,7 @@ NewtonResult NewtonSolver::Iterate(Problem& problem, bool force_refresh) {
     problem.ApplyIncrement(increment_, 1.0);
     jacobian_fresh_ = false;
     const double full_norm = problem.IncrementNorm(increment_);
-    const double step = line_search_ ? LineSearch(problem, increment_.norm()) : 1.0;
+    const double step = damped ? LineSearch(problem, increment_.norm()) : 1.0;
     if (step < kMinDamping) {
       result.failure = "damped Newton step too small (no descent)";
       return result;

@@ -94,8 +94,7 @@ SolveResult SolveStatic(const Model& model, const StaticSettings& settings,
   if (!EmitOutput(output, *state, energy.account(), &result)) return result;
 
   LoadIncrement increment(model, settings.newton, ws, *state);
-  const bool always_damped = settings.line_search == LineSearchMode::kAlways;
-  NewtonSolver newton(settings.newton, JacobianUpdate::kEveryIteration, always_damped);
+  NewtonSolver newton(settings.newton, JacobianUpdate::kEveryIteration);
   const double nominal = 1.0 / settings.load_steps;
   double load_factor = 0.0;
   double step = nominal;
@@ -107,15 +106,6 @@ SolveResult SolveStatic(const Model& model, const StaticSettings& settings,
     NewtonResult newton_result = newton.Solve(increment);
     result.statistics.newton_iterations += newton_result.iterations;
     result.statistics.jacobian_updates += newton_result.jacobian_updates;
-    if (!newton_result.converged && settings.line_search == LineSearchMode::kAuto) {
-      // Plain Newton is fastest when it converges; damping is the fallback before a cut.
-      increment.Reset();
-      newton.set_line_search(true);
-      newton_result = newton.Solve(increment);
-      newton.set_line_search(false);
-      result.statistics.newton_iterations += newton_result.iterations;
-      result.statistics.jacobian_updates += newton_result.jacobian_updates;
-    }
     if (!newton_result.converged) {
       increment.Reset();
       if (++cuts_in_a_row > settings.max_step_cuts) {

@@ -160,7 +160,8 @@ output: {interval: 0.01, vtk: false, vtk_points_per_element: 2}
   EXPECT_EQ(a.type, AnalysisType::kStatic);
   EXPECT_EQ(a.statics.load_steps, 4);
   EXPECT_EQ(a.statics.max_step_cuts, 0);
-  EXPECT_EQ(a.statics.line_search, LineSearchMode::kNever);
+  EXPECT_EQ(a.statics.newton.line_search, LineSearchMode::kNever);
+  EXPECT_EQ(a.dynamics.newton.line_search, LineSearchMode::kNever);
   EXPECT_EQ(a.dynamics.integrator, IntegratorType::kExplicitVerlet);
   EXPECT_DOUBLE_EQ(a.dynamics.spectral_radius, 0.0);
   EXPECT_DOUBLE_EQ(a.dynamics.time_step, 2e-4);

@@ -86,15 +86,15 @@ TwoUnknownProblem MakeArctangentProblem(const Vector2d& initial_guess) {
                            initial_guess);
 }
 
-NewtonSolver MakeFullNewton(bool line_search, int max_iterations = 12) {
-  return NewtonSolver({.max_iterations = max_iterations}, JacobianUpdate::kEveryIteration,
-                      line_search);
+NewtonSolver MakeFullNewton(LineSearchMode line_search, int max_iterations = 12) {
+  return NewtonSolver({.max_iterations = max_iterations, .line_search = line_search},
+                      JacobianUpdate::kEveryIteration);
 }
 
 TEST(NewtonTest, ConvergesQuadraticallyToTheRoot) {
   const Vector2d root(1.0, 2.0);
   TwoUnknownProblem problem = MakeQuadraticProblem(Vector2d(2.0, 3.0));
-  NewtonSolver newton = MakeFullNewton(/*line_search=*/false);
+  NewtonSolver newton = MakeFullNewton(LineSearchMode::kNever);
   const NewtonResult result = newton.Solve(problem);
   ASSERT_TRUE(result.converged) << result.failure;
   EXPECT_LT((problem.x() - root).norm(), 1e-15);
@@ -117,17 +117,29 @@ TEST(NewtonTest, ConvergesQuadraticallyToTheRoot) {
 
 TEST(NewtonTest, LineSearchRescuesAStartFromWhichPlainNewtonDiverges) {
   TwoUnknownProblem plain = MakeArctangentProblem(Vector2d(2.0, 0.0));
-  NewtonSolver plain_newton = MakeFullNewton(/*line_search=*/false, /*max_iterations=*/8);
+  NewtonSolver plain_newton = MakeFullNewton(LineSearchMode::kNever, /*max_iterations=*/8);
   const NewtonResult diverged = plain_newton.Solve(plain);
   EXPECT_FALSE(diverged.converged);
   EXPECT_EQ(diverged.failure, "no convergence in 8 iterations");
   EXPECT_GT(std::abs(plain.x()[0]), 1e20);  // |x₀| roughly squares every iteration
 
   TwoUnknownProblem damped = MakeArctangentProblem(Vector2d(2.0, 0.0));
-  NewtonSolver damped_newton = MakeFullNewton(/*line_search=*/true);
+  NewtonSolver damped_newton = MakeFullNewton(LineSearchMode::kAlways);
   const NewtonResult result = damped_newton.Solve(damped);
   ASSERT_TRUE(result.converged) << result.failure;
   EXPECT_LT((damped.x() - Vector2d(0.0, 1.0)).norm(), 1e-12);
+}
+
+TEST(NewtonTest, AutoModeRetriesAFailedPlainAttemptWithDampedSteps) {
+  // The plain attempt diverges as above (8 iterations), then the damped retry from the initial
+  // guess converges; the result counts both attempts.
+  TwoUnknownProblem problem = MakeArctangentProblem(Vector2d(2.0, 0.0));
+  NewtonSolver newton = MakeFullNewton(LineSearchMode::kAuto, /*max_iterations=*/8);
+  const NewtonResult result = newton.Solve(problem);
+  ASSERT_TRUE(result.converged) << result.failure;
+  EXPECT_LT((problem.x() - Vector2d(0.0, 1.0)).norm(), 1e-12);
+  EXPECT_GT(result.iterations, 8);
+  EXPECT_EQ(result.jacobian_updates, result.iterations);
 }
 
 TEST(NewtonTest, ReportsASingularIterationMatrix) {
@@ -138,7 +150,7 @@ TEST(NewtonTest, ReportsASingularIterationMatrix) {
         return Matrix2d{{1.0, 1.0}, {2.0, 2.0}};
       },
       Vector2d::Zero());
-  NewtonSolver newton = MakeFullNewton(/*line_search=*/false);
+  NewtonSolver newton = MakeFullNewton(LineSearchMode::kNever);
   const NewtonResult result = newton.Solve(problem);
   EXPECT_FALSE(result.converged);
   EXPECT_EQ(result.failure, "singular iteration matrix");
