@@ -2,18 +2,21 @@
 // modes in a probes.csv file.
 // Exit codes: 0 success, 2 invalid input (one line on stderr; also a model too large for the
 // memory), 3 the solver gave up (outputs written so far are kept and summary.json says why),
-// 1 an unexpected internal error (a bug).
+// 130 / 143 a run stopped by SIGINT / SIGTERM after the step in progress (outputs consistent,
+// summary.json says "interrupted"), 1 an unexpected internal error (a bug).
 
 #include <fmt/format.h>
 #include <omp.h>
 
 #include <CLI/CLI.hpp>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <new>
 
 #include "ancfnet/common/error.hpp"
+#include "ancfnet/common/interrupt.hpp"
 #include "ancfnet/io/scene_loader.hpp"
 #include "ancfnet/run/run_scene.hpp"
 #include "assumed_modes_command.hpp"
@@ -27,8 +30,17 @@ constexpr int kExitInternalError = 1;
 constexpr int kExitInputError = 2;
 constexpr int kExitSolverFailure = 3;
 
+// The first SIGINT or SIGTERM asks the run to stop after the step in progress; a second one
+// ends the process at once (the handler is reset to the default action).
+extern "C" void RequestStopOnSignal(int signal) {
+  ancfnet::RequestInterrupt(signal);
+  std::signal(signal, SIG_DFL);
+}
+
 int RunCommand(const std::string& scene_file, const std::string& output_dir, bool quiet,
                std::optional<ancfnet::AnalysisType> type) {
+  std::signal(SIGINT, RequestStopOnSignal);
+  std::signal(SIGTERM, RequestStopOnSignal);
   const ancfnet::Scene scene = ancfnet::LoadScene(scene_file);
   ancfnet::RunOptions options;
   options.output_dir = output_dir.empty()
@@ -37,6 +49,11 @@ int RunCommand(const std::string& scene_file, const std::string& output_dir, boo
   options.analysis_type = type;
   options.show_progress = !quiet;
   const ancfnet::RunSummary summary = ancfnet::RunScene(scene, options);
+  if (summary.interrupted) {
+    fmt::print(stderr, "\nancfnet: {}; outputs up to t = {:.9g} kept in {}\n", summary.message,
+               summary.end_time, options.output_dir.string());
+    return 128 + ancfnet::InterruptRequested();
+  }
   if (!summary.completed) {
     fmt::print(stderr, "ancfnet: {}\n", summary.message);
     if (summary.outputs > 0)

@@ -101,6 +101,7 @@ SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings, dou
         while (next_output <= state->t + time_eps)
           next_output = start + static_cast<double>(++output_count) * output_interval;
     }
+    if (StopIfInterrupted(output, *state, energy.account(), at_output, &result)) return result;
   }
   return result;
 }

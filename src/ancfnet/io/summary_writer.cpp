@@ -107,7 +107,9 @@ void WriteSummaryJson(const std::filesystem::path& path, const RunSummary& summa
   for (const Probe& probe : probes)
     probe_values[probe.name] = ProbeJson(probe, model, state, summary.energy, contacts);
   const Json json = {
-      {"status", summary.completed ? "completed" : "failed"},
+      {"status", summary.completed     ? "completed"
+                 : summary.interrupted ? "interrupted"
+                                       : "failed"},
       {"message", summary.message},
       {"analysis", summary.analysis},
       {"time", Number(summary.end_time)},

@@ -17,8 +17,9 @@ namespace ancfnet {
 /// Counters and outcome of a static or dynamic run.
 struct RunSummary {
   std::string analysis;   ///< "static" or "dynamic"
-  bool completed = true;  ///< false when the solver gave up
-  std::string message;    ///< why the run failed (empty when it completed)
+  bool completed = true;     ///< false when the solver gave up or the run was interrupted
+  bool interrupted = false;  ///< stopped on request (a signal) after writing the state reached
+  std::string message;       ///< why the run stopped early (empty when it completed)
   double end_time = 0.0;  ///< final time (s) or load factor reached
   long steps = 0;         ///< accepted steps
   long newton_iterations = 0;
@@ -35,7 +36,7 @@ struct RunSummary {
 
 /// Writes `summary` and the final values of `probes` (EvaluateProbe on `state` with
 /// summary.energy and `contacts`, the active contacts at `state`) to `path` as JSON, indented by 2:
-/// `{"status": "completed"|"failed", "message", "analysis", "time", "steps", "newton_iterations",
+/// `{"status": "completed"|"failed"|"interrupted", "message", "analysis", "time", "steps", "newton_iterations",
 /// "jacobian_updates", "step_cuts", "step_cut_reasons": {REASON: count}, "pattern_rebuilds", "wall_time_s", "output_time_s", "energy":
 /// {"kinetic", "strain", "gravity", "work", "dissipated", "balance"}, "failures": [{"time", "what",
 /// "tension"}], "probes": {NAME: {"position": [x, y, z]} |

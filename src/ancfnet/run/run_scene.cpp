@@ -115,6 +115,7 @@ RunSummary RunScene(const Scene& scene, const RunOptions& options) {
                                                 scene.output.interval, output, &state);
   progress.Finish();
   summary.completed = result.completed;
+  summary.interrupted = result.interrupted;
   summary.message = result.message;
   summary.end_time = last_written.t;
   summary.steps = result.statistics.steps;

@@ -20,7 +20,9 @@ struct RunOptions {
 /// cables_NNNNNN.vtp frames with cables.pvd, with contact targets contacts_NNNNNN.vtp frames (the
 /// active contact points) with contacts.pvd, and summary.json. A solver failure does not throw:
 /// the outputs written so far are kept, summary.json says "failed" with the time and the reason,
-/// and the returned summary has completed == false. Throws InputError when the directory cannot
+/// and the returned summary has completed == false. An interrupt (common/interrupt.hpp) stops the
+/// run after the step in progress: the state reached is written, summary.json says
+/// "interrupted", and the summary has completed == false and interrupted == true. Throws InputError when the directory cannot
 /// be written.
 RunSummary RunScene(const Scene& scene, const RunOptions& options);
 

@@ -3,9 +3,11 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <csignal>
 #include <regex>
 
 #include "ancfnet/common/error.hpp"
+#include "ancfnet/common/interrupt.hpp"
 
 namespace ancfnet {
 
@@ -19,6 +21,18 @@ bool EmitOutput(const OutputCallback& output, const State& state, const EnergyAc
     result->message = fmt::format("stopped at t = {:.9g}: {}", e.time(), e.what());
     return false;
   }
+}
+
+bool StopIfInterrupted(const OutputCallback& output, const State& state,
+                       const EnergyAccount& energy, bool written, SolveResult* result) {
+  const int signal = InterruptRequested();
+  if (signal == 0) return false;
+  if (!written && !EmitOutput(output, state, energy, result)) return true;
+  const char* name = signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : "a signal";
+  result->completed = false;
+  result->interrupted = true;
+  result->message = fmt::format("interrupted by {} ({}) at t = {:.9g}", name, signal, state.t);
+  return true;
 }
 
 std::string StepCutReason(const std::string& failure) {

@@ -24,6 +24,8 @@ struct SolveStatistics {
 struct SolveResult {
   SolveStatistics statistics;
   bool completed = true;
+  /// Stopped on request (InterruptRequested) after writing the state reached; completed is false.
+  bool interrupted = false;
   std::string message;                 ///< why the analysis stopped early
   std::vector<FailureEvent> failures;  ///< threads and connections that broke, in time order
 };
@@ -36,6 +38,13 @@ using OutputCallback = std::function<void(const State&, const EnergyAccount&)>;
 /// the statistics gathered so far) and returns false: the caller must stop.
 bool EmitOutput(const OutputCallback& output, const State& state, const EnergyAccount& energy,
                 SolveResult* result);
+
+/// After an accepted step or load increment at `state`: when an interrupt is pending, marks
+/// `result` interrupted (not completed) with a message naming the signal and the time, and
+/// returns true: the caller must stop. `written` says whether `state` was already handed to
+/// `output`; if not, it is handed now, so that the outputs end at the state reached.
+bool StopIfInterrupted(const OutputCallback& output, const State& state,
+                       const EnergyAccount& energy, bool written, SolveResult* result);
 
 /// The kind of a step failure: its message with every number replaced by '#', so that failures
 /// that differ only in where and how much count together ("no convergence in # iterations",

@@ -128,6 +128,8 @@ SolveResult SolveStatic(const Model& model, const StaticSettings& settings,
     CalcExternalForces(model, state->q, load_factor, ws);
     energy.Advance(model, ws, *state, load_factor);
     if (!EmitOutput(output, *state, energy.account(), &result)) return result;
+    if (StopIfInterrupted(output, *state, energy.account(), /*written=*/true, &result))
+      return result;
   }
   return result;
 }
