@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "ancfnet/contact/mesh/triangle_mesh.hpp"
+#include "ancfnet/io/unique_names.hpp"
 
 namespace ancfnet {
 
@@ -111,12 +112,14 @@ std::shared_ptr<const MeshBvh> ReadMesh(const YamlMap& map,
   return std::make_shared<const MeshBvh>(std::move(mesh));
 }
 
-ContactTarget ReadTarget(const YamlValue& value, const std::filesystem::path& scene_directory) {
+ContactTarget ReadTarget(const YamlValue& value, const std::filesystem::path& scene_directory,
+                         UniqueNames* names) {
   const YamlMap map = value.AsMap();
   ContactTarget t;
   const std::size_t type =
       map.Get("type").AsChoice({"plane", "sphere", "box", "cylinder", "capsule", "mesh"});
-  t.name = map.Find("name") ? map.Get("name").AsString() : std::string("target");
+  // An unnamed target is called "target" (so only one may be unnamed).
+  t.name = map.Find("name") ? names->Read(map.Get("name")) : names->Claim(value, "target");
   // Carried by a rigid body: the geometry is in the body's frame.
   if (auto body = map.Find("body")) t.body_name = body->AsString();
   switch (type) {
@@ -190,9 +193,10 @@ void ReadContact(const YamlValue& value, const std::filesystem::path& scene_dire
                                : ContactSpec::TargetGeometry::kCapsules;
   if (auto v = map.Find("capsules_per_element")) spec.capsules_per_element = v->AsInt(1, 1000);
   // Targets may be left out when only the threads touch each other.
+  UniqueNames target_names("contact targets");
   if (!spec.self_contact || map.Find("targets"))
     for (const YamlValue& target : map.Get("targets").AsList(true))
-      spec.targets.push_back(ReadTarget(target, scene_directory));
+      spec.targets.push_back(ReadTarget(target, scene_directory, &target_names));
   value.Locate([&] { builder->SetContact(spec); });
 }
 

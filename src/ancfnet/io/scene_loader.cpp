@@ -22,6 +22,7 @@
 #include "ancfnet/io/rigid_body_reader.hpp"
 #include "ancfnet/io/scene_library.hpp"
 #include "ancfnet/io/scene_settings_reader.hpp"
+#include "ancfnet/io/unique_names.hpp"
 #include "ancfnet/io/yaml_reader.hpp"
 #include "ancfnet/model/model_builder.hpp"
 
@@ -120,10 +121,10 @@ void ReadPointMass(const YamlValue& item, ModelBuilder* builder, std::vector<std
 
 // spring_dampers: - {name, from: POINT, to: POINT, law: LAW, natural_length, breaking_force}
 void ReadSpringDamper(const YamlValue& item, const std::vector<std::string>& point_masses,
-                      ModelBuilder* builder) {
+                      UniqueNames* names, ModelBuilder* builder) {
   const YamlMap map = item.AsMap();
   map.CheckKeys({"name", "from", "to", "law", "natural_length", "breaking_force"});
-  const std::string name = map.Get("name").AsString();
+  const std::string name = names->Read(map.Get("name"));
   const CablePointRef from = ReadPoint(map.Get("from"), point_masses);
   const CablePointRef to = ReadPoint(map.Get("to"), point_masses);
   const ConnectionLaw law = ReadConnectionLaw(map.Get("law"));
@@ -269,6 +270,7 @@ Index ReadNamedIndex(const YamlValue& value, const Items& items, std::string_vie
 std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
                               const std::vector<std::string>& point_masses) {
   std::vector<Probe> probes;
+  UniqueNames names("probes");
   for (const YamlValue& item : list.AsList()) {
     const YamlMap map = item.AsMap();
     Probe probe;
@@ -311,10 +313,7 @@ std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
       map.CheckKeys({"name", "quantity", "joint"});
     else
       map.CheckKeys({"name", "quantity", "net"});
-    const YamlValue name = map.Get("name");
-    probe.name = name.AsString();
-    for (const Probe& other : probes)
-      if (other.name == probe.name) name.Fail(fmt::format("two probes are named '{}'", probe.name));
+    probe.name = names.Read(map.Get("name"));
     if (of_a_point) {
       const YamlValue at = map.Get("at");
       const CablePointRef point = ReadPoint(at, point_masses);
@@ -381,8 +380,10 @@ Scene ReadScene(const YamlValue& root, const std::filesystem::path& scene_direct
     for (const YamlValue& item : v->AsList())
       ReadClearanceJoint(
           item, [&](const YamlValue& point) { return ReadPoint(point, point_masses); }, &builder);
-  if (auto v = scene.Find("spring_dampers"))
-    for (const YamlValue& item : v->AsList()) ReadSpringDamper(item, point_masses, &builder);
+  if (auto v = scene.Find("spring_dampers")) {
+    UniqueNames names("spring-dampers");
+    for (const YamlValue& item : v->AsList()) ReadSpringDamper(item, point_masses, &names, &builder);
+  }
   if (auto v = scene.Find("constraints"))
     for (const YamlValue& item : v->AsList()) ReadConstraint(item, &builder);
   if (auto v = scene.Find("loads"))
@@ -406,11 +407,21 @@ Scene ReadScene(const YamlValue& root, const std::filesystem::path& scene_direct
 
 }  // namespace
 
+constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t{64} << 20;
+
 Scene ParseScene(const std::string& yaml_text, const std::string& source_name,
                  const std::filesystem::path& scene_directory) {
   YAML::Node root;
   try {
-    root = YAML::Load(yaml_text);
+    const std::vector<YAML::Node> documents = YAML::LoadAll(yaml_text);
+    if (documents.size() > 1) {
+      const YAML::Mark mark = documents[1].Mark();
+      throw InputError(fmt::format(
+          "{}:{}: a second YAML document (after '---'): a scene is one document, and the rest "
+          "would be ignored",
+          source_name, mark.is_null() ? 0 : mark.line + 1));
+    }
+    if (!documents.empty()) root = documents.front();
   } catch (const YAML::Exception& error) {
     ThrowYamlError(source_name, error);
   }
@@ -426,6 +437,14 @@ Scene LoadScene(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in || std::filesystem::is_directory(file, error))
     throw InputError(fmt::format("{}: cannot open scene file", file.string()));
+  // Refused before reading: a device or pipe (/dev/zero would be read forever) and a file too
+  // large to be a scene (meshes belong in mesh files).
+  if (!std::filesystem::is_regular_file(file, error))
+    throw InputError(fmt::format("{}: not a regular file (a scene is read from a file)", file.string()));
+  if (const std::uintmax_t size = std::filesystem::file_size(file, error);
+      !error && size > kMaxSceneFileBytes)
+    throw InputError(fmt::format("{}: {} bytes; a scene file may hold at most {} MiB", file.string(),
+                                 size, kMaxSceneFileBytes >> 20));
   std::ostringstream text;
   text << in.rdbuf();
   return ParseScene(text.str(), file.string(), file.parent_path());

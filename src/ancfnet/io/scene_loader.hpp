@@ -11,7 +11,8 @@
 namespace ancfnet {
 
 /// Reads and parses the scene file `file`. Throws InputError "FILE: cannot open scene file" when
-/// it cannot be read, and as ParseScene otherwise.
+/// it cannot be read, refuses at once (before reading) a file that is not a regular file (a
+/// device, a pipe) or holds more than 64 MiB, and throws as ParseScene otherwise.
 Scene LoadScene(const std::filesystem::path& file);
 
 /// Parses a scene from YAML text; `source_name` names it in messages and in Scene::source.

@@ -36,6 +36,16 @@ void ReadDynamicSettings(const YamlMap& map, DynamicSettings* dynamics) {
   if (auto v = map.Find("spectral_radius")) dynamics->spectral_radius = v->AsNumberIn(0.0, 1.0);
   if (auto v = map.Find("time_step")) dynamics->time_step = v->AsPositive();
   if (auto v = map.Find("end_time")) dynamics->end_time = v->AsPositive();
+  // A run of more steps than this would not end in any sensible time (h = 1e-300 s once hung).
+  constexpr double kMaxSteps = 1e9;
+  if (const double steps = dynamics->end_time / dynamics->time_step; steps > kMaxSteps) {
+    const std::optional<YamlValue> where = map.Find("time_step");
+    const std::string why = fmt::format(
+        "time_step {} s to end_time {} s is {:.3g} steps; at most {:.0e} are accepted",
+        dynamics->time_step, dynamics->end_time, steps, kMaxSteps);
+    if (where) where->Fail(why);
+    map.Get("end_time").Fail(why);
+  }
   if (auto v = map.Find("min_time_step")) {
     dynamics->min_time_step = v->AsPositive();
     if (dynamics->min_time_step > dynamics->time_step)

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <unordered_map>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
@@ -141,6 +142,19 @@ std::string YamlValue::AsString() const {
   return node_.Scalar();
 }
 
+std::string YamlValue::AsName() const {
+  const std::string name = AsString();
+  constexpr std::size_t kMaxLength = 128;
+  const auto unsafe = [](unsigned char c) { return c < 0x20 || c == 0x7f || c == ',' || c == '"'; };
+  if (name.size() > kMaxLength)
+    Fail(fmt::format("a name has at most {} characters (got {})", kMaxLength, name.size()));
+  if (std::any_of(name.begin(), name.end(), unsafe))
+    Fail("a name may not hold commas, double quotes, line breaks or other control characters "
+         "(it heads CSV columns and keys summary.json)");
+  if (name.front() == ' ' || name.back() == ' ') Fail("a name may not start or end with a blank");
+  return name;
+}
+
 Vector3d YamlValue::AsVector3() const {
   if (!node_.IsSequence() || node_.size() != 3) FailExpected("a list of 3 numbers [x, y, z]");
   Vector3d v;
@@ -160,15 +174,15 @@ std::size_t YamlValue::AsChoice(const std::vector<std::string_view>& names) cons
 YamlMap YamlValue::AsMap() const {
   if (!node_.IsMap()) FailExpected("a map");
   std::vector<YamlMap::Entry> entries;
+  std::unordered_map<std::string, std::size_t> index;  // key → entry, so large maps read in O(n)
   for (auto it = node_.begin(); it != node_.end(); ++it) {
     const YAML::Mark key_mark = it->first.Mark().is_null() ? mark_ : it->first.Mark();
     if (!it->first.IsScalar()) ThrowAt(*source_, key_mark, "a key must be a plain name");
     const std::string key = it->first.Scalar();
-    for (const YamlMap::Entry& entry : entries)
-      if (entry.key == key)
-        ThrowAt(*source_, key_mark,
-                fmt::format("duplicate key '{}' (first given at line {})", key,
-                            entry.key_mark.line + 1));
+    if (const auto [first, inserted] = index.emplace(key, entries.size()); !inserted)
+      ThrowAt(*source_, key_mark,
+              fmt::format("duplicate key '{}' (first given at line {})", key,
+                          entries[first->second].key_mark.line + 1));
     entries.push_back({key, key_mark, Child(it->second, key, key_mark)});
   }
   return YamlMap(*this, std::move(entries));
@@ -178,8 +192,9 @@ std::vector<YamlValue> YamlValue::AsList(bool non_empty) const {
   if (!node_.IsSequence() || (non_empty && node_.size() == 0))
     FailExpected(non_empty ? "a non-empty list" : "a list");
   std::vector<YamlValue> items;
-  for (std::size_t i = 0; i < node_.size(); ++i)
-    items.push_back(Child(node_[i], fmt::format("{}[{}]", name_, i), mark_));
+  items.reserve(node_.size());
+  for (auto it = node_.begin(); it != node_.end(); ++it)
+    items.push_back(Child(*it, fmt::format("{}[{}]", name_, items.size()), mark_));
   return items;
 }
 

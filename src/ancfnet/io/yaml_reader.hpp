@@ -53,6 +53,10 @@ class YamlValue {
   bool AsBool() const;
   /// A non-empty scalar, as written.
   std::string AsString() const;
+  /// The name of a thing (a probe, a target, a spring-damper, …): a scalar of at most 128
+  /// characters without line breaks or other control characters, commas, double quotes or
+  /// surrounding blanks, so that it can head a CSV column and key a JSON object as written.
+  std::string AsName() const;
   /// A list of exactly three finite numbers [x, y, z].
   Vector3d AsVector3() const;
   /// The index in `names` of this scalar; the error lists the names and suggests the closest.

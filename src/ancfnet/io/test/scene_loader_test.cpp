@@ -10,57 +10,15 @@
 #include <string>
 
 #include "ancfnet/common/error.hpp"
+#include "cantilever_scene.hpp"
 
 namespace ancfnet {
 namespace {
 
-// The cantilever of examples/cantilever_static.yaml, without comments, so that the positions in
-// the expected messages below can be read off it (line 1 is "gravity").
-constexpr const char* kCantilever = R"(gravity: [0, 0, 0]
-materials:
-  steel: {youngs_modulus: 2.0e11, density: 7800}
-sections:
-  bar: {shape: rectangle, width: 0.01, height: 0.01}
-cables:
-  - name: beam
-    start: [0, 0, 0]
-    end: [1, 0, 0]
-    elements: 16
-    material: steel
-    section: bar
-constraints:
-  - {type: clamp, at: beam.start}
-loads:
-  - {type: point_force, at: beam.end, force: [0, 0, -333.333]}
-probes:
-  - {name: tip, quantity: position, at: beam.end}
-analysis:
-  type: static
-  load_steps: 10
-)";
-
-// `text` with its first occurrence of `from` replaced by `to` (which must be there).
-std::string Replace(std::string text, const std::string& from, const std::string& to) {
-  const std::size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << "'" << from << "' is not in the scene";
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
-
-// The cantilever with one edit.
-std::string Cantilever(const std::string& from = "", const std::string& to = "") {
-  return from.empty() ? std::string(kCantilever) : Replace(kCantilever, from, to);
-}
-
-// The message of the InputError that parsing `yaml` as "scene.yaml" throws; "" when none.
-std::string ErrorOf(const std::string& yaml) {
-  try {
-    ParseScene(yaml, "scene.yaml");
-  } catch (const InputError& error) {
-    return error.what();
-  }
-  return "";
-}
+using test::Cantilever;
+using test::ErrorOf;
+using test::kCantilever;
+using test::Replace;
 
 // The folder of the repository (CTest sets ANCFNET_SOURCE_DIR; by hand, run from the root).
 std::filesystem::path SourceDir() {
@@ -446,7 +404,7 @@ const BadScene kBadScenes[] = {
      "scene.yaml:13:5: two cables are named 'beam' (key 'cables[1]')"},
     {"DuplicateProbeName",
      Cantilever("analysis:\n", "  - {name: tip, quantity: energy}\nanalysis:\n"),
-     "scene.yaml:19:12: two probes are named 'tip' (key 'name')"},
+     "scene.yaml:19:12: two probes are named 'tip' (the first at scene.yaml:18:12) (key 'name')"},
     {"EnergyProbeWithPoint", Cantilever("quantity: position", "quantity: energy"),
      "scene.yaml:18:39: an energy probe reads the whole system and takes no point (key 'at')"},
     {"ProbeWithoutPoint", Cantilever(", at: beam.end}", "}"),

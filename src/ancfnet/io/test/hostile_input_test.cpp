@@ -1,0 +1,110 @@
+// Scene input a careless or hostile user gives (issue "Reliability gates"), refused at once with
+// file, line and key: names that would break probes.csv or summary.json, two things of a kind
+// with one name, a second YAML document, a step count no run could finish, and files that are
+// not scenes (a device, a file larger than 64 MiB). docs/reliability.md lists each class.
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "ancfnet/common/error.hpp"
+#include "ancfnet/io/scene_loader.hpp"
+#include "cantilever_scene.hpp"
+
+namespace ancfnet {
+namespace {
+
+using test::Cantilever;
+using test::ErrorOf;
+
+constexpr const char* kTipProbe = "  - {name: tip, quantity: position, at: beam.end}\n";
+
+// The cantilever with its probe line replaced by `probes` (each line "  - {…}").
+std::string WithProbes(const std::string& probes) { return Cantilever(kTipProbe, probes); }
+
+TEST(HostileInput, NamesThatWouldBreakTheCsvOrTheJsonAreRefused) {
+  const std::string why =
+      "a name may not hold commas, double quotes, line breaks or other control characters (it "
+      "heads CSV columns and keys summary.json) (key 'name')";
+  EXPECT_EQ(ErrorOf(WithProbes("  - {name: \"tip,x\", quantity: position, at: beam.end}\n")),
+            "scene.yaml:18:12: " + why);
+  EXPECT_EQ(ErrorOf(WithProbes("  - {name: \"tip\\nx\", quantity: position, at: beam.end}\n")),
+            "scene.yaml:18:12: " + why);
+  EXPECT_EQ(ErrorOf(WithProbes("  - {name: 'say \"hi\"', quantity: position, at: beam.end}\n")),
+            "scene.yaml:18:12: " + why);
+  EXPECT_EQ(ErrorOf(WithProbes("  - {name: \" tip\", quantity: position, at: beam.end}\n")),
+            "scene.yaml:18:12: a name may not start or end with a blank (key 'name')");
+  EXPECT_EQ(ErrorOf(WithProbes("  - {name: " + std::string(129, 'a') +
+                               ", quantity: position, at: beam.end}\n")),
+            "scene.yaml:18:12: a name has at most 128 characters (got 129) (key 'name')");
+  EXPECT_EQ(ErrorOf(WithProbes("  - {name: tip.x-1_a:b, quantity: position, at: beam.end}\n")), "");
+}
+
+TEST(HostileInput, TwoThingsOfAKindWithOneNameAreRefused) {
+  EXPECT_EQ(ErrorOf(WithProbes(std::string(kTipProbe) +
+                               "  - {name: tip, quantity: velocity, at: beam.end}\n")),
+            "scene.yaml:19:12: two probes are named 'tip' (the first at scene.yaml:18:12) (key "
+            "'name')");
+  const std::string link =
+      "  - {name: link, from: beam.start, to: beam.end, law: {type: linear, stiffness: 1}}\n";
+  EXPECT_EQ(ErrorOf(Cantilever("probes:\n", "spring_dampers:\n" + link + link + "probes:\n")),
+            "scene.yaml:19:12: two spring-dampers are named 'link' (the first at "
+            "scene.yaml:18:12) (key 'name')");
+  const std::string contact = R"(contact:
+  law: {type: hertz, stiffness: 1.0e6}
+  targets:
+    - {name: ball, type: sphere, center: [0, 0, -1], radius: 0.1}
+    - {name: ball, type: sphere, center: [0, 0, 1], radius: 0.1}
+probes:
+)";
+  EXPECT_EQ(ErrorOf(Cantilever("probes:\n", contact)),
+            "scene.yaml:21:14: two contact targets are named 'ball' (the first at "
+            "scene.yaml:20:14) (key 'name')");
+  const std::string unnamed = R"(contact:
+  law: {type: hertz, stiffness: 1.0e6}
+  targets:
+    - {type: sphere, center: [0, 0, -1], radius: 0.1}
+    - {type: sphere, center: [0, 0, 1], radius: 0.1}
+probes:
+)";
+  EXPECT_EQ(ErrorOf(Cantilever("probes:\n", unnamed)),
+            "scene.yaml:21:7: two contact targets are named 'target' (the first at "
+            "scene.yaml:20:7) (key 'targets[1]')");
+}
+
+TEST(HostileInput, ASecondYamlDocumentIsRefused) {
+  EXPECT_EQ(ErrorOf(Cantilever() + "---\ngravity: [0, 0, -9.81]\n"),
+            "scene.yaml:23: a second YAML document (after '---'): a scene is one document, and "
+            "the rest would be ignored");
+}
+
+TEST(HostileInput, AStepCountNoRunCouldFinishIsRefused) {
+  EXPECT_EQ(ErrorOf(Cantilever("  type: static\n", "  type: dynamic\n  time_step: 1.0e-300\n")),
+            "scene.yaml:21:14: time_step 1e-300 s to end_time 1 s is 1e+300 steps; at most 1e+09 "
+            "are accepted (key 'time_step')");
+  EXPECT_EQ(ErrorOf(Cantilever("  type: static\n", "  type: dynamic\n  time_step: 1.0e-9\n")), "");
+}
+
+TEST(HostileInput, FilesThatAreNotScenesAreRefusedBeforeReading) {
+  auto error_of_file = [](const std::filesystem::path& file) -> std::string {
+    try {
+      LoadScene(file);
+    } catch (const InputError& error) {
+      return error.what();
+    }
+    return "";
+  };
+  EXPECT_EQ(error_of_file("/dev/zero"), "/dev/zero: not a regular file (a scene is read from a file)");
+  // A sparse file of 64 MiB + 1 byte: refused by its size, without being read.
+  const std::filesystem::path big = std::filesystem::temp_directory_path() / "ancfnet_big_scene.yaml";
+  std::ofstream(big).put('#');
+  std::filesystem::resize_file(big, (std::uintmax_t{64} << 20) + 1);
+  EXPECT_EQ(error_of_file(big),
+            big.string() + ": 67108865 bytes; a scene file may hold at most 64 MiB");
+  std::filesystem::remove(big);
+}
+
+}  // namespace
+}  // namespace ancfnet
