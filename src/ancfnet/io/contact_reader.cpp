@@ -24,7 +24,8 @@ NormalLaw ReadNormalLaw(const YamlValue& value) {
     return value.Locate(
         [&] { return MakeLinearContactLaw(map.Get("stiffness").AsPositive(), damping); });
   }
-  const double exponent = map.Find("exponent") ? map.Get("exponent").AsPositive() : 1.5;
+  // Hertz's 3/2 for smooth bodies, 1 to about 2 for others; outside [1, 3] no contact law.
+  const double exponent = map.Find("exponent") ? map.Get("exponent").AsNumberIn(1.0, 3.0) : 1.5;
   if (type == 1) {
     map.CheckKeys({"type", "stiffness", "exponent"});
     return value.Locate(

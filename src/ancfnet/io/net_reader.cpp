@@ -1,5 +1,8 @@
 #include "ancfnet/io/net_reader.hpp"
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -31,7 +34,11 @@ NetTopology ReadGridTopology(const YamlMap& map, bool diamond) {
     std::tie(grid.meshes_u, grid.meshes_v) =
         ReadPair(*v, [](const YamlValue& x) { return x.AsInt(1, 10000); });
   } else {
-    const double size = map.Get("mesh_size").AsPositive();
+    const YamlValue size_value = map.Get("mesh_size");
+    const double size = size_value.AsPositive();
+    if (size > std::max(grid.side_u, grid.side_v))
+      size_value.Fail(fmt::format("a mesh of {} m does not fit in a net of side {} m", size,
+                                  std::max(grid.side_u, grid.side_v)));
     grid.meshes_u = MeshesForSize(grid.side_u, size);
     grid.meshes_v = MeshesForSize(grid.side_v, size);
   }

@@ -106,5 +106,23 @@ TEST(HostileInput, FilesThatAreNotScenesAreRefusedBeforeReading) {
   std::filesystem::remove(big);
 }
 
+TEST(HostileInput, ImplausibleValuesAreRefusedWithTheReason) {
+  const std::string contact = R"(contact:
+  law: {type: hertz, stiffness: 1.0e6, exponent: 100}
+  targets:
+    - {name: ball, type: sphere, center: [0, 0, -1], radius: 0.1}
+probes:
+)";
+  EXPECT_EQ(ErrorOf(Cantilever("probes:\n", contact)),
+            "scene.yaml:18:50: expected a number in [1, 3], got '100' (key 'exponent')");
+  const std::string net = R"(nets:
+  - {name: net, type: square, side: 1.0, mesh_size: 2.0, center: [0, 0, 1], material: steel,
+     section: bar}
+probes:
+)";
+  EXPECT_EQ(ErrorOf(Cantilever("probes:\n", net)),
+            "scene.yaml:18:53: a mesh of 2 m does not fit in a net of side 1 m (key 'mesh_size')");
+}
+
 }  // namespace
 }  // namespace ancfnet
