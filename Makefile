@@ -2,7 +2,7 @@
 BUILD := build/release
 JOBS ?= $(shell nproc)
 
-.PHONY: deps build demo test bench clean
+.PHONY: deps build demo test sanitize bench clean
 
 deps:
 	@scripts/install-deps.sh
@@ -16,6 +16,12 @@ demo: build
 
 test: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# The unit tests built with AddressSanitizer and UndefinedBehaviorSanitizer (build/sanitize).
+sanitize: deps
+	@cmake --preset sanitize >/dev/null
+	@cmake --build build/sanitize -j $(JOBS) --target ancfnet_unit_tests
+	@ANCFNET_SOURCE_DIR=$(CURDIR) OMP_NUM_THREADS=1 build/sanitize/tests/ancfnet_unit_tests
 
 bench: build
 	@scripts/install-deps.sh --bench
