@@ -6,6 +6,8 @@
 #include <cmath>
 #include <numbers>
 
+#include <unistd.h>
+
 #include "ancfnet/io/connection_law_reader.hpp"
 #include "ancfnet/model/net_builder.hpp"
 
@@ -22,6 +24,23 @@ auto ReadPair(const YamlValue& value, Read read) {
   const std::vector<YamlValue> items = value.AsList();
   if (items.size() != 2) value.FailExpected("a number or a pair [u, v]");
   return std::pair{read(items[0]), read(items[1])};
+}
+
+// Memory a run needs per thread of a net, measured on the 40 × 40 net drop without self-contact
+// (72 MB for 3 280 threads, docs/benchmarks.md): a floor, self-contact needs several times more.
+constexpr double kBytesPerThread = 22e3;
+
+// Refuses at `where` a net whose threads alone would need more memory than the machine has,
+// before anything is built (a 10 000 × 10 000 net once took 9 s and 5.5 GB to fail).
+void CheckNetFitsInMemory(const GridNetSpec& grid, const YamlValue& where) {
+  const double threads = double(grid.meshes_u) * (grid.meshes_v + 1.0) +
+                         double(grid.meshes_v) * (grid.meshes_u + 1.0);
+  const double needed = threads * kBytesPerThread;
+  const double available = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGE_SIZE));
+  if (available > 0.0 && needed > available)
+    where.Fail(fmt::format("a net of {} × {} meshes has {:.3g} threads and would need at least "
+                           "{:.3g} GB; this machine has {:.3g} GB",
+                           grid.meshes_u, grid.meshes_v, threads, needed / 1e9, available / 1e9));
 }
 
 NetTopology ReadGridTopology(const YamlMap& map, bool diamond) {
@@ -42,6 +61,7 @@ NetTopology ReadGridTopology(const YamlMap& map, bool diamond) {
     grid.meshes_u = MeshesForSize(grid.side_u, size);
     grid.meshes_v = MeshesForSize(grid.side_v, size);
   }
+  CheckNetFitsInMemory(grid, map.Find("meshes") ? map.Get("meshes") : map.Get("mesh_size"));
   if (auto v = map.Find("center")) grid.center = v->AsVector3();
   if (auto v = map.Find("axis_u")) grid.axis_u = v->AsVector3();
   if (auto v = map.Find("axis_v")) grid.axis_v = v->AsVector3();

@@ -23,21 +23,21 @@ bool Model::has_free_bodies() const {
   return false;
 }
 
+Index Model::FindNamed(const std::string& name, NamedKind kind) const {
+  const auto found = names_.find(name);
+  return found != names_.end() && found->second.first == kind ? found->second.second : -1;
+}
+
 Index Model::FindRigidBody(const std::string& name) const {
-  for (std::size_t i = 0; i < rigid_bodies_.size(); ++i)
-    if (rigid_bodies_[i].name == name) return static_cast<Index>(i);
-  return -1;
+  return FindNamed(name, NamedKind::kRigidBody);
 }
 
 Index Model::FindPointMass(const std::string& name) const {
-  for (std::size_t i = 0; i < point_masses_.size(); ++i)
-    if (point_masses_[i].name == name) return static_cast<Index>(i);
-  return -1;
+  return FindNamed(name, NamedKind::kPointMass);
 }
 
 Index Model::FindCable(const std::string& name) const {
-  for (std::size_t i = 0; i < cables_.size(); ++i)
-    if (cables_[i].name == name) return static_cast<Index>(i);
+  if (const Index cable = FindNamed(name, NamedKind::kCable); cable >= 0) return cable;
   std::string names;
   for (const Cable& cable : cables_) names += (names.empty() ? "" : ", ") + cable.name;
   throw InputError(fmt::format("no cable named '{}' (cables: {})", name, names));

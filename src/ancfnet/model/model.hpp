@@ -6,6 +6,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 #include "ancfnet/common/types.hpp"
@@ -196,6 +197,12 @@ class Model {
 
  private:
   friend class ModelBuilder;
+  // Cables, point masses and rigid bodies by name (one name space, ModelBuilder::CheckNameIsFree),
+  // so that finding one costs O(1) however large the net.
+  enum class NamedKind { kCable, kPointMass, kRigidBody };
+  std::unordered_map<std::string, std::pair<NamedKind, Index>> names_;
+  // The index of `name` if it names a thing of `kind`, else −1.
+  Index FindNamed(const std::string& name, NamedKind kind) const;
   std::vector<Cable> cables_;
   std::vector<CableNode> nodes_;
   std::vector<CableElement> elements_;

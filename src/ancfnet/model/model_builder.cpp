@@ -55,12 +55,16 @@ void ModelBuilder::SetGravity(const Vector3d& gravity) {
 
 void ModelBuilder::CheckNameIsFree(const std::string& name) const {
   if (name.empty()) throw InputError("cables, point masses and bodies need a non-empty name");
-  for (const Cable& cable : model_.cables_)
-    if (cable.name == name) throw InputError(fmt::format("two cables are named '{}'", name));
-  if (model_.FindPointMass(name) >= 0)
-    throw InputError(fmt::format("a point mass is already named '{}'", name));
-  if (model_.FindRigidBody(name) >= 0)
-    throw InputError(fmt::format("a rigid body is already named '{}'", name));
+  const auto found = model_.names_.find(name);
+  if (found == model_.names_.end()) return;
+  switch (found->second.first) {
+    case Model::NamedKind::kCable:
+      throw InputError(fmt::format("two cables are named '{}'", name));
+    case Model::NamedKind::kPointMass:
+      throw InputError(fmt::format("a point mass is already named '{}'", name));
+    case Model::NamedKind::kRigidBody:
+      throw InputError(fmt::format("a rigid body is already named '{}'", name));
+  }
 }
 
 void ModelBuilder::SetRayleighDamping(const RayleighDamping& damping) {
@@ -213,6 +217,7 @@ Index ModelBuilder::AddCable(const CableSpec& spec) {
   cable.breaking_force = spec.breaking_force;
   const Index cable_index = static_cast<Index>(model_.cables_.size());
   model_.cables_.push_back(cable);
+  model_.names_.emplace(cable.name, std::pair{Model::NamedKind::kCable, cable_index});
 
   // Nodes along the segment. The slope r' = (end − start)/L is the stretch of the straight cable
   // against its natural length L: a unit tangent when stress-free.
@@ -269,7 +274,9 @@ Index ModelBuilder::AddPointMass(const std::string& name, double mass, const Vec
   const Index dof = AddCoordinates(position);
   model_.initial_velocities_.segment<3>(dof) = velocity;
   model_.point_masses_.push_back({name, mass, dof});
-  return static_cast<Index>(model_.point_masses_.size()) - 1;
+  const Index index = static_cast<Index>(model_.point_masses_.size()) - 1;
+  model_.names_.emplace(name, std::pair{Model::NamedKind::kPointMass, index});
+  return index;
 }
 
 void ModelBuilder::SetPointMassVelocity(const std::string& name, const Vector3d& velocity) {
@@ -335,7 +342,9 @@ Index ModelBuilder::AddRigidBody(const RigidBodySpec& spec) {
     }
   }
   model_.rigid_bodies_.push_back(body);
-  return static_cast<Index>(model_.rigid_bodies_.size()) - 1;
+  const Index index = static_cast<Index>(model_.rigid_bodies_.size()) - 1;
+  model_.names_.emplace(body.name, std::pair{Model::NamedKind::kRigidBody, index});
+  return index;
 }
 
 double ModelBuilder::PointMassOf(const CablePointRef& point) const {

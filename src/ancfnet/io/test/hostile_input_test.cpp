@@ -124,5 +124,19 @@ probes:
             "scene.yaml:18:53: a mesh of 2 m does not fit in a net of side 1 m (key 'mesh_size')");
 }
 
+TEST(HostileInput, ANetTooLargeForTheMemoryIsRefusedBeforeItIsBuilt) {
+  const std::string net = R"(nets:
+  - {name: net, type: square, side: 1.0, meshes: 10000, center: [0, 0, 1], material: steel,
+     section: bar}
+probes:
+)";
+  const std::string error = ErrorOf(Cantilever("probes:\n", net));
+  EXPECT_EQ(error.rfind("scene.yaml:18:50: a net of 10000 × 10000 meshes has 2e+08 threads and "
+                        "would need at least 4.4e+03 GB; this machine has ",
+                        0),
+            0u)
+      << error;
+}
+
 }  // namespace
 }  // namespace ancfnet
