@@ -79,6 +79,10 @@ struct LinearSystem {
 
 LinearSystem Linearise(const Model& model, const DofMap& dofs, const VectorXd& q,
                        const DampingModel* damping) {
+  if (model.num_constraint_equations() > 0)
+    throw InputError(
+        "modal analysis with ideal joints is not supported yet (the modes would ignore the "
+        "joints' constraints); remove the joints or run a static or dynamic analysis");
   if (model.has_free_bodies())
     throw InputError(
         "modal analysis: the model has a free rigid body (its rotation coordinates are not "

@@ -1,0 +1,287 @@
+// Ideal joints (constraints with Lagrange multipliers) through the solvers:
+// - a rigid pendulum on a revolute or spherical joint to the ground: small-amplitude period
+//   T = 2π √(I_O/(m g d)) (1 + θ₀²/16 + 11 θ₀⁴/3072) (the series of the complete elliptic
+//   integral), energy constant and the joint's drift |g| within Newton's tolerance;
+// - the ideal slider-crank of Flores & Ambrósio (crank r = 0.05 m, rod l = 0.12 m, 5000 rpm):
+//   the slider's acceleration −r ω² (1 + r/l) at θ = 0 and r ω² (1 − r/l) at θ = π;
+// - statics: an ANCF cable pinned by spherical joints to the ground and to a fixed body carries
+//   its weight and a load; the joints' reactions balance them.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "ancfnet/integrators/dynamic_solver.hpp"
+#include "ancfnet/model/model_builder.hpp"
+#include "ancfnet/solvers/modal.hpp"
+#include "ancfnet/solvers/static_solver.hpp"
+
+namespace ancfnet {
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+
+// ---- Pendulum -------------------------------------------------------------------------------
+
+constexpr double kMass = 2.0;       // m (kg)
+constexpr double kArm = 0.5;        // d: pivot to centre of mass (m)
+constexpr double kInertiaZ = 0.03;  // about the centre of mass (kg m²)
+constexpr double kGravity = 9.81;
+constexpr double kAmplitude = 0.05;  // θ₀ (rad)
+
+double PendulumPeriod() {
+  const double inertia = kInertiaZ + kMass * kArm * kArm;  // about the pivot
+  const double t0 = 2.0 * kPi * std::sqrt(inertia / (kMass * kGravity * kArm));
+  const double a2 = kAmplitude * kAmplitude;
+  return t0 * (1.0 + a2 / 16.0 + 11.0 * a2 * a2 / 3072.0);
+}
+
+// The body hangs from the pivot at the origin, released from rest at θ₀ about z.
+Model MakePendulum(IdealJoint::Type type) {
+  ModelBuilder builder;
+  builder.SetGravity(Vector3d(0, -kGravity, 0));
+  const Matrix3d rotation(Eigen::AngleAxisd(kAmplitude, Vector3d::UnitZ()));
+  builder.AddRigidBody({.name = "bob",
+                        .mass = kMass,
+                        .inertia = Vector3d(0.01, 0.02, kInertiaZ).asDiagonal(),
+                        .position = rotation * Vector3d(0, -kArm, 0),
+                        .orientation = rotation});
+  builder.AddIdealJoint({.name = "pivot",
+                         .type = type,
+                         .first = {.kind = JointAnchor::Kind::kGround},
+                         .second = {.kind = JointAnchor::Kind::kBody, .name = "bob"},
+                         .point = Vector3d::Zero(),
+                         .axis = Vector3d::UnitZ()});
+  return builder.Build();
+}
+
+void ExpectPendulumSwingsAsTheClosedForm(IdealJoint::Type type, const char* label) {
+  const Model model = MakePendulum(type);
+  const double period = PendulumPeriod();
+  DynamicSettings settings;
+  settings.time_step = period / 400.0;
+  settings.end_time = 3.0 * period;
+  settings.spectral_radius = 0.9;
+  State state = MakeInitialState(model);
+  std::vector<double> crossings;  // times the centre of mass passes x = 0 going −x
+  double previous_x = 0.0, previous_t = 0.0;
+  double e0 = 0.0, max_drift = 0.0;
+  bool first = true;
+  const SolveResult result = SolveDynamic(
+      model, settings, 0.0,
+      [&](const State& s, const EnergyAccount& energy) {
+        const double x = s.q[0];
+        if (first) {
+          e0 = energy.Balance();
+          first = false;
+        } else if (previous_x > 0.0 && x <= 0.0) {
+          crossings.push_back(previous_t + (s.t - previous_t) * previous_x / (previous_x - x));
+        }
+        max_drift = std::max(max_drift, std::abs(energy.Balance() - e0));
+        previous_x = x;
+        previous_t = s.t;
+      },
+      &state);
+  ASSERT_TRUE(result.completed) << result.message;
+  ASSERT_GE(crossings.size(), 3u);
+  const double measured = (crossings.back() - crossings.front()) / (crossings.size() - 1.0);
+  // The energy of the swing, m g d (1 − cos θ₀), is the scale of the energy drift.
+  const double swing = kMass * kGravity * kArm * (1.0 - std::cos(kAmplitude));
+  std::printf(
+      "%s pendulum: period %.6f s (closed form %.6f s, error %.2e), energy drift %.2e of the "
+      "swing's energy, largest |g| %.2e m\n",
+      label, measured, period, measured / period - 1.0, max_drift / swing,
+      result.statistics.max_constraint_violation);
+  EXPECT_NEAR(measured / period, 1.0, 5e-3);
+  EXPECT_LT(max_drift, 1e-3 * swing);
+  // Newton's tolerance on a position equation at the origin: atol = 1e-8 m.
+  EXPECT_LT(result.statistics.max_constraint_violation, settings.newton.absolute_tolerance);
+}
+
+TEST(IdealJoints, PendulumOnARevoluteJointSwingsWithTheClosedFormPeriod) {
+  ExpectPendulumSwingsAsTheClosedForm(IdealJoint::Type::kRevolute, "revolute");
+}
+
+TEST(IdealJoints, PendulumOnASphericalJointSwingsWithTheClosedFormPeriod) {
+  ExpectPendulumSwingsAsTheClosedForm(IdealJoint::Type::kSpherical, "spherical");
+}
+
+TEST(IdealJoints, OtherIntegratorsAndModalAnalysisRefuseJoints) {
+  const Model model = MakePendulum(IdealJoint::Type::kRevolute);
+  for (IntegratorType integrator :
+       {IntegratorType::kImplicitMidpoint, IntegratorType::kExplicitVerlet}) {
+    DynamicSettings settings;
+    settings.integrator = integrator;
+    State state = MakeInitialState(model);
+    EXPECT_THROW(SolveDynamic(model, settings, 0.0, {}, &state), InputError);
+  }
+  try {
+    CalcModes(model, MakeInitialState(model).q, ModalSettings{});
+    ADD_FAILURE() << "modal analysis accepted a model with ideal joints";
+  } catch (const InputError& error) {
+    EXPECT_NE(std::string(error.what()).find("ideal joints is not supported yet"),
+              std::string::npos)
+        << error.what();
+  }
+}
+
+// ---- Slider-crank ---------------------------------------------------------------------------
+
+constexpr double kCrank = 0.05;                                    // r (m)
+constexpr double kRod = 0.12;                                      // l (m)
+constexpr double kOmega = 5000.0 * 2.0 * std::numbers::pi / 60.0;  // rad/s
+constexpr double kCrankPeriod = 2.0 * std::numbers::pi / kOmega;   // s
+
+// The crank a prescribed body turning at ω about z, the rod a free body, the slider a free body
+// on the x axis (a line joint), spherical joints at the crank pin and the piston pin: 8
+// equations on 12 coordinates, leaving the rod's spin about its own axis and the slider's
+// rotation free (and at rest), none of them redundant.
+Model MakeSliderCrank() {
+  ModelBuilder builder;
+  builder.AddRigidBody({.name = "crank",
+                        .mass = 0.30,
+                        .inertia = Vector3d(1e-4, 1e-4, 1e-4).asDiagonal(),
+                        .angular_velocity = Vector3d(0, 0, kOmega),
+                        .motion = BodyMotion::kPrescribed});
+  // At θ = 0 the rod lies along x; the slider is at rest and the rod turns at −r ω/l.
+  builder.AddRigidBody({.name = "rod",
+                        .mass = 0.21,
+                        .inertia = Vector3d(1e-5, 2.5e-4, 2.5e-4).asDiagonal(),
+                        .position = Vector3d(kCrank + 0.5 * kRod, 0, 0),
+                        .velocity = Vector3d(0, 0.5 * kCrank * kOmega, 0),
+                        .angular_velocity = Vector3d(0, 0, -kCrank * kOmega / kRod)});
+  const Vector3d pin(kCrank + kRod, 0, 0);
+  builder.AddRigidBody({.name = "slider",
+                        .mass = 0.14,
+                        .inertia = Vector3d(1e-5, 1e-5, 1e-5).asDiagonal(),
+                        .position = pin});
+  using Kind = JointAnchor::Kind;
+  builder.AddIdealJoint({.name = "crank_pin",
+                         .type = IdealJoint::Type::kSpherical,
+                         .first = {.kind = Kind::kBody, .name = "crank"},
+                         .second = {.kind = Kind::kBody, .name = "rod"},
+                         .point = Vector3d(kCrank, 0, 0)});
+  builder.AddIdealJoint({.name = "piston_pin",
+                         .type = IdealJoint::Type::kSpherical,
+                         .first = {.kind = Kind::kBody, .name = "rod"},
+                         .second = {.kind = Kind::kBody, .name = "slider"},
+                         .point = pin});
+  builder.AddIdealJoint({.name = "guide",
+                         .type = IdealJoint::Type::kLine,
+                         .first = {.kind = Kind::kBody, .name = "slider"},
+                         .second = {.kind = Kind::kGround},
+                         .point = pin,
+                         .axis = Vector3d::UnitX()});
+  return builder.Build();
+}
+
+TEST(IdealJoints, SliderCrankSliderAccelerationMatchesTheKinematics) {
+  const Model model = MakeSliderCrank();
+  const Index slider_x = model.rigid_bodies()[2].position_dof();
+  DynamicSettings settings;
+  settings.time_step = kCrankPeriod / 2400.0;
+  settings.end_time = 2.5 * kCrankPeriod;
+  settings.spectral_radius = 0.6;
+  // Newton's test is on positions, q = q̂ + β' a with β' ≈ 6e-12 s²: 1e-10 |q| resolves the
+  // accelerations to ~1 m/s² (examples/slider_crank.yaml).
+  settings.newton.relative_tolerance = 1e-10;
+  settings.newton.absolute_tolerance = 1e-12;
+  State state = MakeInitialState(model);
+  double at_0 = 0.0, at_pi = 0.0, best_0 = 1.0, best_pi = 1.0;
+  EnergyAccount first_energy, last_energy;
+  bool first = true;
+  const SolveResult result = SolveDynamic(
+      model, settings, 0.0,
+      [&](const State& s, const EnergyAccount& energy) {
+        if (first) first_energy = energy, first = false;
+        last_energy = energy;
+        if (std::abs(s.t - 2.0 * kCrankPeriod) < best_0)
+          best_0 = std::abs(s.t - 2.0 * kCrankPeriod), at_0 = s.a[slider_x];
+        if (std::abs(s.t - 2.5 * kCrankPeriod) < best_pi)
+          best_pi = std::abs(s.t - 2.5 * kCrankPeriod), at_pi = s.a[slider_x];
+      },
+      &state);
+  ASSERT_TRUE(result.completed) << result.message;
+  const double ideal_0 = -kCrank * kOmega * kOmega * (1.0 + kCrank / kRod);
+  const double ideal_pi = kCrank * kOmega * kOmega * (1.0 - kCrank / kRod);
+  const double kinetic = 0.5 * 0.21 * std::pow(0.5 * kCrank * kOmega, 2);
+  std::printf(
+      "ideal slider-crank: slider acceleration %.2f m/s² at θ = 0 (exact %.2f, error %.2e), "
+      "%.2f at θ = π (exact %.2f, error %.2e); largest |g| %.2e m; energy balance moved "
+      "%.2e J (rod's kinetic energy at θ = 0: %.3f J)\n",
+      at_0, ideal_0, at_0 / ideal_0 - 1.0, at_pi, ideal_pi, at_pi / ideal_pi - 1.0,
+      result.statistics.max_constraint_violation,
+      last_energy.Balance() - first_energy.Balance(), kinetic);
+  EXPECT_NEAR(at_0 / ideal_0, 1.0, 1e-3);
+  EXPECT_NEAR(at_pi / ideal_pi, 1.0, 1e-3);
+  // Newton's tolerance at the pins, 0.05 to 0.17 m from the origin: atol + rtol |c|.
+  EXPECT_LT(result.statistics.max_constraint_violation, 1e-12 + 1e-10 * (kCrank + kRod));
+  EXPECT_LT(std::abs(last_energy.Balance() - first_energy.Balance()), 1e-2 * kinetic);
+}
+
+// ---- Statics --------------------------------------------------------------------------------
+
+TEST(IdealJoints, CablePinnedToTheGroundAndABodyCarriesItsLoadThroughTheJoints) {
+  // A 1 m nylon rope (d = 4 mm) along x, pinned by spherical joints to the ground at its start
+  // and to a fixed body at its end, under gravity (−z) and a load F at its middle. By symmetry
+  // each joint carries half of the weight and of F; the horizontal reactions (the rope's
+  // tension) are equal and opposite.
+  const Material nylon{.youngs_modulus = 3e9, .density = 1140};
+  const Section section = MakeCircleSection(0.004);
+  const Vector3d load(0.0, 0.3, -2.0);  // N
+  ModelBuilder builder;
+  builder.SetGravity(Vector3d(0, 0, -kGravity));
+  builder.AddCable({.name = "rope",
+                    .start = Vector3d::Zero(),
+                    .end = Vector3d(1.0, 0, 0),
+                    .num_elements = 8,
+                    .properties = MakeCableProperties(nylon, section)});
+  builder.AddRigidBody({.name = "bracket",
+                        .mass = 1.0,
+                        .position = Vector3d(1.05, 0, 0),
+                        .motion = BodyMotion::kFixed});
+  builder.AddPointForce({"rope", 0.5}, load);
+  using Kind = JointAnchor::Kind;
+  builder.AddIdealJoint({.name = "wall_pin",
+                         .type = IdealJoint::Type::kSpherical,
+                         .first = {.kind = Kind::kPoint, .name = "rope", .s = 0.0},
+                         .second = {.kind = Kind::kGround}});
+  builder.AddIdealJoint({.name = "bracket_pin",
+                         .type = IdealJoint::Type::kSpherical,
+                         .first = {.kind = Kind::kPoint, .name = "rope", .s = 1.0},
+                         .second = {.kind = Kind::kBody, .name = "bracket"}});
+  const Model model = builder.Build();
+  StaticSettings settings;
+  settings.load_steps = 4;
+  State state = MakeInitialState(model);
+  const SolveResult result = SolveStatic(model, settings, {}, &state);
+  ASSERT_TRUE(result.completed) << result.message;
+  // g = c_rope − c_other: the joint pushes the rope with −λ.
+  const Vector3d on_start = -state.multipliers.segment<3>(0);
+  const Vector3d on_end = -state.multipliers.segment<3>(3);
+  const double weight = nylon.density * section.area * 1.0 * kGravity;
+  const Vector3d expected_each = 0.5 * (Vector3d(0, 0, weight) - load);
+  const Vector3d end_position = state.q.segment<3>(model.NodePositionDof(8));
+  std::printf(
+      "pinned rope: reactions (%.6f, %.6f, %.6f) N and (%.6f, %.6f, %.6f) N, expected vertical "
+      "and lateral (%.6f, %.6f) N each; end moved %.2e m; largest |g| %.2e m\n",
+      on_start.x(), on_start.y(), on_start.z(), on_end.x(), on_end.y(), on_end.z(),
+      expected_each.y(), expected_each.z(), (end_position - Vector3d(1, 0, 0)).norm(),
+      result.statistics.max_constraint_violation);
+  const double scale = expected_each.norm();
+  EXPECT_NEAR(on_start.y(), expected_each.y(), 1e-6 * scale);
+  EXPECT_NEAR(on_start.z(), expected_each.z(), 1e-6 * scale);
+  EXPECT_NEAR(on_end.y(), expected_each.y(), 1e-6 * scale);
+  EXPECT_NEAR(on_end.z(), expected_each.z(), 1e-6 * scale);
+  EXPECT_NEAR(on_start.x() + on_end.x(), 0.0, 1e-6 * scale);
+  EXPECT_LT(on_start.x(), 0.0);  // the sagging rope is in tension: held outwards at both ends
+  EXPECT_LT((end_position - Vector3d(1, 0, 0)).norm(), 1e-8);
+}
+
+}  // namespace
+}  // namespace ancfnet
