@@ -60,10 +60,9 @@ expect_error duplicate_name 's/name: piston_pin/name: crank_pin/' "name: crank_p
 expect_error one_side 's/between: \[{body: slider}, ground\]/between: [{body: slider}]/' \
   "between: \[\{body: slider\}\]" "between"
 expect_error misspelt_type 's/type: line/type: lin/' "type: lin" "line"
-expect_error apart 's/point: \[0.05, 0, 0\]/point: [0.06, 0, 0]/' "point: \[0.06" "apart"
 
 # What does not support joints says so.
-sed -e 's/integrator: generalized_alpha/integrator: implicit_midpoint/' "$scene" >"$work/midpoint.yaml"
+sed -e 's/integrator: generalized_alpha/integrator: midpoint/' "$scene" >"$work/midpoint.yaml"
 status=0
 "$ancfnet" run "$work/midpoint.yaml" -o "$work/midpoint" -q 2>"$work/stderr" || status=$?
 [[ $status -eq 2 ]] || fail "implicit midpoint with joints: exit $status, expected 2"

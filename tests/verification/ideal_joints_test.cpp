@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "ancfnet/common/error.hpp"
 #include "ancfnet/integrators/dynamic_solver.hpp"
 #include "ancfnet/model/model_builder.hpp"
 #include "ancfnet/solvers/modal.hpp"
@@ -259,7 +260,8 @@ TEST(IdealJoints, CablePinnedToTheGroundAndABodyCarriesItsLoadThroughTheJoints) 
   StaticSettings settings;
   settings.load_steps = 4;
   State state = MakeInitialState(model);
-  const SolveResult result = SolveStatic(model, settings, {}, &state);
+  const SolveResult result =
+      SolveStatic(model, settings, [](const State&, const EnergyAccount&) {}, &state);
   ASSERT_TRUE(result.completed) << result.message;
   // g = c_rope − c_other: the joint pushes the rope with −λ.
   const Vector3d on_start = -state.multipliers.segment<3>(0);

@@ -119,7 +119,7 @@ SolveResult SolveDynamic(const Model& model, const DynamicSettings& settings,
         "the {} integrator does not support ideal joints (constraints with Lagrange "
         "multipliers); use integrator: generalized_alpha",
         settings.integrator == IntegratorType::kExplicitVerlet ? "explicit_verlet"
-                                                               : "implicit_midpoint"));
+                                                               : "midpoint"));
   switch (settings.integrator) {
     case IntegratorType::kExplicitVerlet: {
       ExplicitVerletIntegrator integrator(model);

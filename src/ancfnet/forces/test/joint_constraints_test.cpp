@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include "ancfnet/assembly/system_matrix.hpp"
+#include "ancfnet/common/error.hpp"
 #include "ancfnet/forces/joint_constraints.hpp"
 #include "ancfnet/forces/test/central_difference_jacobian.hpp"
 #include "ancfnet/forces/test/target_contact_check.hpp"
