@@ -5,7 +5,9 @@
 // - the ideal slider-crank of Flores & Ambrósio (crank r = 0.05 m, rod l = 0.12 m, 5000 rpm):
 //   the slider's acceleration −r ω² (1 + r/l) at θ = 0 and r ω² (1 − r/l) at θ = π;
 // - statics: an ANCF cable pinned by spherical joints to the ground and to a fixed body carries
-//   its weight and a load; the joints' reactions balance them.
+//   its weight and a load; the joints' reactions balance them;
+// - a strip welded to a fixed body bends as the builder's clamped cantilever, and a strip
+//   pendulum on a spherical joint swings as on the builder's pin.
 
 #include <gtest/gtest.h>
 
@@ -283,6 +285,107 @@ TEST(IdealJoints, CablePinnedToTheGroundAndABodyCarriesItsLoadThroughTheJoints) 
   EXPECT_NEAR(on_start.x() + on_end.x(), 0.0, 1e-6 * scale);
   EXPECT_LT(on_start.x(), 0.0);  // the sagging rope is in tension: held outwards at both ends
   EXPECT_LT((end_position - Vector3d(1, 0, 0)).norm(), 1e-8);
+}
+
+// ---- Joints on cable points against the builder's own supports ------------------------------
+
+// A 1 m steel strip along x (20 × 5 mm), 8 elements.
+void AddStrip(ModelBuilder* builder) {
+  const Material steel{.youngs_modulus = 2.0e11, .density = 7800.0};
+  builder->AddCable({.name = "strip",
+                     .start = Vector3d::Zero(),
+                     .end = Vector3d(1.0, 0, 0),
+                     .num_elements = 8,
+                     .properties = MakeCableProperties(steel, MakeRectangleSection(0.02, 0.005))});
+}
+
+Vector3d TipPosition(const Model& model, const State& state) {
+  return state.q.segment<3>(model.NodePositionDof(model.cables()[0].first_node + 8));
+}
+
+TEST(IdealJoints, CableWeldedToAFixedBodyBendsAsAClampedCantilever) {
+  // The weld holds the strip's end and slope where the body holds them: the same equilibrium as
+  // the builder's clamp, under a tip load large enough to bend it far (tip rotation ≈ 0.5 rad).
+  const Vector3d load(0.0, -150.0, 40.0);
+  StaticSettings settings;
+  settings.load_steps = 4;
+  settings.newton.relative_tolerance = 1e-10;
+  settings.newton.absolute_tolerance = 1e-12;
+  ModelBuilder clamped;
+  AddStrip(&clamped);
+  clamped.AddClamp({"strip", 0.0});
+  clamped.AddPointForce({"strip", 1.0}, load);
+  const Model clamped_model = clamped.Build();
+  ModelBuilder welded;
+  AddStrip(&welded);
+  welded.AddRigidBody({.name = "wall",
+                       .mass = 1.0,
+                       .position = Vector3d(-0.1, 0.02, 0),
+                       .orientation = Matrix3d(Eigen::AngleAxisd(0.3, Vector3d(1, 2, 3).normalized())),
+                       .motion = BodyMotion::kFixed});
+  welded.AddIdealJoint({.name = "weld",
+                        .type = IdealJoint::Type::kWeld,
+                        .first = {.kind = JointAnchor::Kind::kPoint, .name = "strip", .s = 0.0},
+                        .second = {.kind = JointAnchor::Kind::kBody, .name = "wall"}});
+  welded.AddPointForce({"strip", 1.0}, load);
+  const Model welded_model = welded.Build();
+  const auto no_output = [](const State&, const EnergyAccount&) {};
+  State clamped_state = MakeInitialState(clamped_model);
+  ASSERT_TRUE(SolveStatic(clamped_model, settings, no_output, &clamped_state).completed);
+  State welded_state = MakeInitialState(welded_model);
+  const SolveResult result = SolveStatic(welded_model, settings, no_output, &welded_state);
+  ASSERT_TRUE(result.completed) << result.message;
+  const Vector3d clamped_tip = TipPosition(clamped_model, clamped_state);
+  const Vector3d welded_tip = TipPosition(welded_model, welded_state);
+  // The weld's force on the wall, λ of its position equations, carries the whole load.
+  const Vector3d on_wall = welded_state.multipliers.segment<3>(0);
+  std::printf(
+      "welded strip: tip (%.9f, %.9f, %.9f) m, clamped (%.9f, %.9f, %.9f) m; force on the "
+      "wall (%.6f, %.6f, %.6f) N\n",
+      welded_tip.x(), welded_tip.y(), welded_tip.z(), clamped_tip.x(), clamped_tip.y(),
+      clamped_tip.z(), on_wall.x(), on_wall.y(), on_wall.z());
+  EXPECT_GT((clamped_tip - Vector3d(1, 0, 0)).norm(), 0.3);  // a large deflection
+  EXPECT_LT((welded_tip - clamped_tip).norm(), 1e-9);
+  EXPECT_LT((on_wall - load).norm(), 1e-8 * load.norm());
+}
+
+TEST(IdealJoints, CablePendulumOnASphericalJointSwingsAsOnTheBuildersPin) {
+  // The strip released horizontally under gravity, its start held by a spherical joint to the
+  // ground or by the builder's pin (its position coordinates fixed): the same motion.
+  DynamicSettings settings;
+  settings.time_step = 1e-3;
+  settings.end_time = 0.3;
+  settings.newton.relative_tolerance = 1e-10;
+  settings.newton.absolute_tolerance = 1e-12;
+  ModelBuilder pinned;
+  pinned.SetGravity(Vector3d(0, 0, -kGravity));
+  AddStrip(&pinned);
+  pinned.AddPin({"strip", 0.0});
+  const Model pinned_model = pinned.Build();
+  ModelBuilder jointed;
+  jointed.SetGravity(Vector3d(0, 0, -kGravity));
+  AddStrip(&jointed);
+  jointed.AddIdealJoint({.name = "pin",
+                         .type = IdealJoint::Type::kSpherical,
+                         .first = {.kind = JointAnchor::Kind::kGround},
+                         .second = {.kind = JointAnchor::Kind::kPoint, .name = "strip", .s = 0.0}});
+  const Model jointed_model = jointed.Build();
+  const auto no_output = [](const State&, const EnergyAccount&) {};
+  State pinned_state = MakeInitialState(pinned_model);
+  ASSERT_TRUE(SolveDynamic(pinned_model, settings, 0.0, no_output, &pinned_state).completed);
+  State jointed_state = MakeInitialState(jointed_model);
+  const SolveResult result =
+      SolveDynamic(jointed_model, settings, 0.0, no_output, &jointed_state);
+  ASSERT_TRUE(result.completed) << result.message;
+  const Vector3d pinned_tip = TipPosition(pinned_model, pinned_state);
+  const Vector3d jointed_tip = TipPosition(jointed_model, jointed_state);
+  std::printf("cable pendulum at t = 0.3 s: tip (%.9f, %.9f, %.9f) m on the joint, "
+              "(%.9f, %.9f, %.9f) m on the pin; largest |g| %.2e m\n",
+              jointed_tip.x(), jointed_tip.y(), jointed_tip.z(), pinned_tip.x(), pinned_tip.y(),
+              pinned_tip.z(), result.statistics.max_constraint_violation);
+  EXPECT_LT(pinned_tip.z(), -0.3);  // it has swung down
+  EXPECT_LT((jointed_tip - pinned_tip).norm(), 1e-7);
+  EXPECT_LT(result.statistics.max_constraint_violation, 1e-12);
 }
 
 }  // namespace
