@@ -23,6 +23,7 @@
 #include "ancfnet/model/model_builder.hpp"
 #include "ancfnet/solvers/modal.hpp"
 #include "ancfnet/solvers/static_solver.hpp"
+#include "slider_crank.hpp"
 
 namespace ancfnet {
 namespace {
@@ -135,10 +136,7 @@ TEST(IdealJoints, OtherIntegratorsAndModalAnalysisRefuseJoints) {
 
 // ---- Slider-crank ---------------------------------------------------------------------------
 
-constexpr double kCrank = 0.05;                                    // r (m)
-constexpr double kRod = 0.12;                                      // l (m)
-constexpr double kOmega = 5000.0 * 2.0 * std::numbers::pi / 60.0;  // rad/s
-constexpr double kCrankPeriod = 2.0 * std::numbers::pi / kOmega;   // s
+using namespace verification::slider_crank;
 
 // The crank a prescribed body turning at ω about z, the rod a free body, the slider a free body
 // on the x axis (a line joint), spherical joints at the crank pin and the piston pin: 8
@@ -146,18 +144,7 @@ constexpr double kCrankPeriod = 2.0 * std::numbers::pi / kOmega;   // s
 // rotation free (and at rest), none of them redundant.
 Model MakeSliderCrank() {
   ModelBuilder builder;
-  builder.AddRigidBody({.name = "crank",
-                        .mass = 0.30,
-                        .inertia = Vector3d(1e-4, 1e-4, 1e-4).asDiagonal(),
-                        .angular_velocity = Vector3d(0, 0, kOmega),
-                        .motion = BodyMotion::kPrescribed});
-  // At θ = 0 the rod lies along x; the slider is at rest and the rod turns at −r ω/l.
-  builder.AddRigidBody({.name = "rod",
-                        .mass = 0.21,
-                        .inertia = Vector3d(1e-5, 2.5e-4, 2.5e-4).asDiagonal(),
-                        .position = Vector3d(kCrank + 0.5 * kRod, 0, 0),
-                        .velocity = Vector3d(0, 0.5 * kCrank * kOmega, 0),
-                        .angular_velocity = Vector3d(0, 0, -kCrank * kOmega / kRod)});
+  AddCrankAndRod(&builder);
   const Vector3d pin(kCrank + kRod, 0, 0);
   builder.AddRigidBody({.name = "slider",
                         .mass = 0.14,
@@ -187,8 +174,8 @@ TEST(IdealJoints, SliderCrankSliderAccelerationMatchesTheKinematics) {
   const Model model = MakeSliderCrank();
   const Index slider_x = model.rigid_bodies()[2].position_dof();
   DynamicSettings settings;
-  settings.time_step = kCrankPeriod / 2400.0;
-  settings.end_time = 2.5 * kCrankPeriod;
+  settings.time_step = kPeriod / 2400.0;
+  settings.end_time = 2.5 * kPeriod;
   settings.spectral_radius = 0.6;
   // Newton's test is on positions, q = q̂ + β' a with β' ≈ 6e-12 s²: 1e-10 |q| resolves the
   // accelerations to ~1 m/s² (examples/slider_crank.yaml).
@@ -203,10 +190,10 @@ TEST(IdealJoints, SliderCrankSliderAccelerationMatchesTheKinematics) {
       [&](const State& s, const EnergyAccount& energy) {
         if (first) first_energy = energy, first = false;
         last_energy = energy;
-        if (std::abs(s.t - 2.0 * kCrankPeriod) < best_0)
-          best_0 = std::abs(s.t - 2.0 * kCrankPeriod), at_0 = s.a[slider_x];
-        if (std::abs(s.t - 2.5 * kCrankPeriod) < best_pi)
-          best_pi = std::abs(s.t - 2.5 * kCrankPeriod), at_pi = s.a[slider_x];
+        if (std::abs(s.t - 2.0 * kPeriod) < best_0)
+          best_0 = std::abs(s.t - 2.0 * kPeriod), at_0 = s.a[slider_x];
+        if (std::abs(s.t - 2.5 * kPeriod) < best_pi)
+          best_pi = std::abs(s.t - 2.5 * kPeriod), at_pi = s.a[slider_x];
       },
       &state);
   ASSERT_TRUE(result.completed) << result.message;

@@ -9,6 +9,7 @@
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/forces/joint_constraints.hpp"
 #include "ancfnet/forces/test/central_difference_jacobian.hpp"
+#include "ancfnet/forces/test/spinning_body.hpp"
 #include "ancfnet/forces/test/target_contact_check.hpp"
 #include "ancfnet/model/model_builder.hpp"
 #include "ancfnet/state/state.hpp"
@@ -21,18 +22,6 @@ using Type = IdealJoint::Type;
 
 const Vector3d kRopeEnd(0.3, 0.1, 0.05);
 const Vector3d kJointPoint = 0.3 * kRopeEnd;  // the rope's point at s = 0.3
-
-void AddSpinningBody(const std::string& name, const Vector3d& center, double angle,
-                     ModelBuilder* builder) {
-  builder->AddRigidBody(
-      {.name = name,
-       .mass = 2.0,
-       .inertia = Vector3d(0.02, 0.03, 0.04).asDiagonal(),
-       .position = center,
-       .orientation = Eigen::AngleAxisd(angle, Vector3d(1, 2, 3).normalized()).toRotationMatrix(),
-       .velocity = Vector3d(0.05, -0.02, 0.01),
-       .angular_velocity = Vector3d(3.0, -5.0, 7.0)});
-}
 
 struct Case {
   const char* label;
@@ -49,7 +38,7 @@ Model MakeModel(const Case& c) {
   IdealJointSpec spec{.name = "joint", .type = c.type, .axis = Vector3d(1, -2, 2)};
   auto side = [&](Kind kind, const char* body, double angle) -> JointAnchorSpec {
     if (kind == Kind::kBody) {
-      AddSpinningBody(body, kJointPoint + Vector3d(0.02, -0.01, 0.03), angle, &builder);
+      test::AddSpinningBody(body, kJointPoint + Vector3d(0.02, -0.01, 0.03), angle, &builder);
       return {.kind = Kind::kBody, .name = body, .position = kJointPoint};
     }
     if (kind == Kind::kPoint) return {.kind = Kind::kPoint, .name = "rope", .s = 0.3};
@@ -186,7 +175,7 @@ TEST(JointConstraints, HoldAtTheInitialState) {
 TEST(JointConstraints, BuilderRefusesInvalidJoints) {
   ModelBuilder builder;
   test::AddTestRope(Vector3d::Zero(), kRopeEnd, &builder);
-  AddSpinningBody("a", kJointPoint, 0.4, &builder);
+  test::AddSpinningBody("a", kJointPoint, 0.4, &builder);
   const JointAnchorSpec body{.kind = Kind::kBody, .name = "a"};
   const JointAnchorSpec rope{.kind = Kind::kPoint, .name = "rope", .s = 0.3};
   builder.AddIdealJoint({.name = "pin", .type = Type::kSpherical, .first = rope, .second = body});
