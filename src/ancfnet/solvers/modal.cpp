@@ -165,11 +165,12 @@ UndampedModes SolveUndamped(const Model& model, const DofMap& dofs, LinearSystem
                             const ModalSettings& settings) {
   const Index n = dofs.num_unknowns();
   // The joints take one degree of freedom per constraint equation.
-  const Index free = n - (system.constraints ? system.constraints->size() : 0);
-  if (settings.num_modes < 1 || settings.num_modes >= free)
-    throw InputError(fmt::format(
-        "modes: asked for {} of a model with {} degrees of freedom (1 … {})", settings.num_modes,
-        free, free - 1));
+  const Index m = system.constraints ? system.constraints->size() : 0;
+  if (settings.num_modes < 1 || settings.num_modes >= n - m)
+    throw InputError(fmt::format("modes: asked for {} of a model with {} unknowns{} (1 … {})",
+                                 settings.num_modes, n,
+                                 m > 0 ? fmt::format(" and {} joint constraints", m) : "",
+                                 n - m - 1));
   const double scale = system.stiffness.diagonal().cwiseAbs().maxCoeff() /
                        system.mass.diagonal().cwiseAbs().maxCoeff();
   double sigma = settings.shift;
