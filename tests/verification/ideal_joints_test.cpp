@@ -3,7 +3,8 @@
 //   T = 2π √(I_O/(m g d)) (1 + θ₀²/16 + 11 θ₀⁴/3072) (the series of the complete elliptic
 //   integral), energy constant and the joint's drift |g| within Newton's tolerance;
 // - the ideal slider-crank of Flores & Ambrósio (crank r = 0.05 m, rod l = 0.12 m, 5000 rpm):
-//   the slider's acceleration −r ω² (1 + r/l) at θ = 0 and r ω² (1 − r/l) at θ = π;
+//   the slider's acceleration −r ω² (1 + r/l) at θ = 0 and r ω² (1 − r/l) at θ = π, the
+//   slider on a line or a prismatic joint; a block sliding down an incline on a prismatic joint;
 // - statics: an ANCF cable pinned by spherical joints to the ground and to a fixed body carries
 //   its weight and a load; the joints' reactions balance them;
 // - a strip welded to a fixed body bends as the builder's clamped cantilever, and a strip
@@ -20,9 +21,11 @@
 #include <vector>
 
 #include "ancfnet/common/error.hpp"
+#include "ancfnet/forces/joint_constraints.hpp"
 #include "ancfnet/integrators/dynamic_solver.hpp"
 #include "ancfnet/model/model_builder.hpp"
 #include "ancfnet/solvers/modal.hpp"
+#include "ancfnet/state/rigid_body_state.hpp"
 #include "ancfnet/solvers/static_solver.hpp"
 #include "slider_crank.hpp"
 
@@ -138,10 +141,11 @@ TEST(IdealJoints, OtherIntegratorsRefuseJoints) {
 using namespace verification::slider_crank;
 
 // The crank a prescribed body turning at ω about z, the rod a free body, the slider a free body
-// on the x axis (a line joint), spherical joints at the crank pin and the piston pin: 8
-// equations on 12 coordinates, leaving the rod's spin about its own axis and the slider's
-// rotation free (and at rest), none of them redundant.
-Model MakeSliderCrank() {
+// guided along the x axis, spherical joints at the crank pin and the piston pin. With a line
+// joint as the guide: 8 equations on 12 coordinates, leaving the rod's spin about its own axis
+// and the slider's rotation free (and at rest); with a prismatic joint, 11 equations, the
+// slider's rotation locked. None of them redundant.
+Model MakeSliderCrank(IdealJoint::Type guide) {
   ModelBuilder builder;
   AddCrankAndRod(&builder);
   const Vector3d pin(kCrank + kRod, 0, 0);
@@ -161,7 +165,7 @@ Model MakeSliderCrank() {
                          .second = {.kind = Kind::kBody, .name = "slider"},
                          .point = pin});
   builder.AddIdealJoint({.name = "guide",
-                         .type = IdealJoint::Type::kLine,
+                         .type = guide,
                          .first = {.kind = Kind::kBody, .name = "slider"},
                          .second = {.kind = Kind::kGround},
                          .point = pin,
@@ -169,8 +173,8 @@ Model MakeSliderCrank() {
   return builder.Build();
 }
 
-TEST(IdealJoints, SliderCrankSliderAccelerationMatchesTheKinematics) {
-  const Model model = MakeSliderCrank();
+void ExpectSliderAccelerationAsTheKinematics(IdealJoint::Type guide, const char* label) {
+  const Model model = MakeSliderCrank(guide);
   const Index slider_x = model.rigid_bodies()[2].position_dof();
   DynamicSettings settings;
   settings.time_step = kPeriod / 2400.0;
@@ -200,10 +204,11 @@ TEST(IdealJoints, SliderCrankSliderAccelerationMatchesTheKinematics) {
   const double ideal_pi = kCrank * kOmega * kOmega * (1.0 - kCrank / kRod);
   const double kinetic = 0.5 * 0.21 * std::pow(0.5 * kCrank * kOmega, 2);
   std::printf(
-      "ideal slider-crank: slider acceleration %.2f m/s² at θ = 0 (exact %.2f, error %.2e), "
+      "ideal slider-crank, %s guide: slider acceleration %.2f m/s² at θ = 0 (exact %.2f, error "
+      "%.2e), "
       "%.2f at θ = π (exact %.2f, error %.2e); largest |g| %.2e m; energy balance moved "
       "%.2e J (rod's kinetic energy at θ = 0: %.3f J)\n",
-      at_0, ideal_0, at_0 / ideal_0 - 1.0, at_pi, ideal_pi, at_pi / ideal_pi - 1.0,
+      label, at_0, ideal_0, at_0 / ideal_0 - 1.0, at_pi, ideal_pi, at_pi / ideal_pi - 1.0,
       result.statistics.max_constraint_violation,
       last_energy.Balance() - first_energy.Balance(), kinetic);
   EXPECT_NEAR(at_0 / ideal_0, 1.0, 1e-3);
@@ -211,6 +216,56 @@ TEST(IdealJoints, SliderCrankSliderAccelerationMatchesTheKinematics) {
   // Newton's tolerance at the pins, 0.05 to 0.17 m from the origin: atol + rtol |c|.
   EXPECT_LT(result.statistics.max_constraint_violation, 1e-12 + 1e-10 * (kCrank + kRod));
   EXPECT_LT(std::abs(last_energy.Balance() - first_energy.Balance()), 1e-2 * kinetic);
+}
+
+TEST(IdealJoints, SliderCrankSliderAccelerationMatchesTheKinematics) {
+  ExpectSliderAccelerationAsTheKinematics(IdealJoint::Type::kLine, "line");
+  ExpectSliderAccelerationAsTheKinematics(IdealJoint::Type::kPrismatic, "prismatic");
+}
+
+TEST(IdealJoints, BlockOnAPrismaticJointSlidesDownTheIncline) {
+  // A turned, spinning block on a prismatic joint to the ground along a = (cos 30°, 0, −sin 30°),
+  // under gravity −z: its velocities are projected onto the joint (the spin and the velocity
+  // across the guide vanish), it slides with g sin 30° and keeps its orientation:
+  // s(t) = (v₀·a) t + ½ g sin 30° t².
+  const Vector3d axis(std::cos(kPi / 6), 0.0, -std::sin(kPi / 6));
+  const Vector3d velocity(0.4, 0.3, -0.2);
+  const Matrix3d orientation(Eigen::AngleAxisd(0.7, Vector3d(1, -1, 2).normalized()));
+  ModelBuilder builder;
+  builder.SetGravity(Vector3d(0, 0, -kGravity));
+  builder.AddRigidBody({.name = "block",
+                        .mass = 1.5,
+                        .inertia = Vector3d(0.01, 0.02, 0.025).asDiagonal(),
+                        .position = Vector3d(0.3, -0.2, 1.0),
+                        .orientation = orientation,
+                        .velocity = velocity,
+                        .angular_velocity = Vector3d(1.0, 2.0, 3.0)});
+  builder.AddIdealJoint({.name = "guide",
+                         .type = IdealJoint::Type::kPrismatic,
+                         .first = {.kind = JointAnchor::Kind::kBody, .name = "block"},
+                         .second = {.kind = JointAnchor::Kind::kGround},
+                         .axis = axis});
+  const Model model = builder.Build();
+  DynamicSettings settings;
+  settings.time_step = 1e-2;
+  settings.end_time = 1.0;
+  State state = MakeInitialState(model);
+  const SolveResult result =
+      SolveDynamic(model, settings, 0.0, [](const State&, const EnergyAccount&) {}, &state);
+  ASSERT_TRUE(result.completed) << result.message;
+  const double t = settings.end_time;
+  const Vector3d expected = Vector3d(0.3, -0.2, 1.0) +
+                            (velocity.dot(axis) * t + 0.5 * kGravity * std::sin(kPi / 6) * t * t) *
+                                axis;
+  const BodyPose pose = CalcBodyPose(model, state, 0);
+  std::printf("block on the incline at t = 1 s: position error %.2e m, turned by %.2e rad, "
+              "largest |g| %.2e\n",
+              (pose.p_WB - expected).norm(),
+              Eigen::AngleAxisd(pose.R_WB * orientation.transpose()).angle(),
+              result.statistics.max_constraint_violation);
+  EXPECT_LT((pose.p_WB - expected).norm(), 1e-8);
+  EXPECT_LT(Eigen::AngleAxisd(pose.R_WB * orientation.transpose()).angle(), 1e-8);
+  EXPECT_LT(result.statistics.max_constraint_violation, 1e-8);
 }
 
 // ---- Statics --------------------------------------------------------------------------------
@@ -329,16 +384,24 @@ TEST(IdealJoints, CableWeldedToAFixedBodyBendsAsAClampedCantilever) {
   ASSERT_TRUE(result.completed) << result.message;
   const Vector3d clamped_tip = TipPosition(clamped_model, clamped_state);
   const Vector3d welded_tip = TipPosition(welded_model, welded_state);
-  // The weld's force on the wall, λ of its position equations, carries the whole load.
-  const Vector3d on_wall = welded_state.multipliers.segment<3>(0);
+  // The weld's reaction on the wall carries the whole load and its moment about the weld.
+  JointConstraints constraints(welded_model);
+  constraints.Evaluate(welded_state.q, welded_state.v, welded_state.body_rotation);
+  const JointReaction reaction = constraints.CalcReaction(0, welded_state.multipliers);
+  const Vector3d& on_wall = reaction.force;
+  const Vector3d load_moment = welded_tip.cross(load);  // about the weld at the origin
   std::printf(
       "welded strip: tip (%.9f, %.9f, %.9f) m, clamped (%.9f, %.9f, %.9f) m; force on the "
-      "wall (%.6f, %.6f, %.6f) N\n",
+      "wall (%.6f, %.6f, %.6f) N, moment (%.6f, %.6f, %.6f) N m (the load's: (%.6f, %.6f, "
+      "%.6f))\n",
       welded_tip.x(), welded_tip.y(), welded_tip.z(), clamped_tip.x(), clamped_tip.y(),
-      clamped_tip.z(), on_wall.x(), on_wall.y(), on_wall.z());
+      clamped_tip.z(), on_wall.x(), on_wall.y(), on_wall.z(), reaction.moment.x(),
+      reaction.moment.y(), reaction.moment.z(), load_moment.x(), load_moment.y(),
+      load_moment.z());
   EXPECT_GT((clamped_tip - Vector3d(1, 0, 0)).norm(), 0.3);  // a large deflection
   EXPECT_LT((welded_tip - clamped_tip).norm(), 1e-9);
   EXPECT_LT((on_wall - load).norm(), 1e-8 * load.norm());
+  EXPECT_LT((reaction.moment - load_moment).norm(), 1e-8 * load_moment.norm());
 }
 
 TEST(IdealJoints, CablePendulumOnASphericalJointSwingsAsOnTheBuildersPin) {

@@ -18,6 +18,42 @@ Vector3d CenterConvective(const AnchorMotion& m) {
   return w.cross(w.cross(m.rotation * m.body_point));
 }
 
+// Which kinds of equation a joint has, in the order of its rows: coincidence, in-plane,
+// perpendicular, slope (forces/joint_constraints.hpp).
+bool HasCoincidence(IdealJoint::Type type) {
+  return type == IdealJoint::Type::kSpherical || type == IdealJoint::Type::kRevolute ||
+         type == IdealJoint::Type::kWeld;
+}
+bool HasInPlane(IdealJoint::Type type) {
+  return type == IdealJoint::Type::kLine || type == IdealJoint::Type::kPrismatic;
+}
+
+// A perpendicularity equation (R₁ u)·(R₂ w) = 0, u fixed in the first side, w in the second.
+struct Perpendicular {
+  const Vector3d* u = nullptr;
+  const Vector3d* w = nullptr;
+};
+
+// The perpendicularity equations of a joint: a revolute's axis u against w₁ and w₂; a prismatic
+// joint's the same and v against w₂, which locks the turning about the axis too. Returns their
+// number.
+int CollectPerpendiculars(const IdealJoint& joint, std::array<Perpendicular, 3>* out) {
+  const Vector3d* u = &joint.axis_in_first;
+  const Vector3d* w1 = &joint.normal1_in_second;
+  const Vector3d* w2 = &joint.normal2_in_second;
+  switch (joint.type) {
+    case IdealJoint::Type::kRevolute:
+      *out = {Perpendicular{u, w1}, Perpendicular{u, w2}, Perpendicular{}};
+      return 2;
+    case IdealJoint::Type::kPrismatic:
+      *out = {Perpendicular{u, w1}, Perpendicular{u, w2},
+              Perpendicular{&joint.normal1_in_first, w2}};
+      return 3;
+    default:
+      return 0;
+  }
+}
+
 // The blocks of an anchor in the order of AnchorMotion (and of SystemMatrix's joint couplings).
 void AppendBlocks(const Model& model, const JointAnchor& anchor, std::vector<Index>* blocks) {
   if (anchor.kind == JointAnchor::Kind::kBody) {
@@ -91,7 +127,7 @@ void JointConstraints::EvaluateJoint(Index j, const AnchorMotion& m1, const Anch
   const Matrix3d& r1 = m1.rotation;  // the identity for the ground
   const Matrix3d& r2 = m2.rotation;
 
-  if (joint.type != IdealJoint::Type::kLine) {
+  if (HasCoincidence(joint.type)) {
     // Coincidence g = c₁ − c₂: G = (A₁_b, −A₂_b) (forces/joint_anchor.hpp), g̈ = G a + Ġv with
     // Ġv = ω₁ × (ω₁ × R₁ s₁) − ω₂ × (ω₂ × R₂ s₂) (Géradin & Cardona 2001).
     for (int i = 0; i < 3; ++i) {
@@ -100,51 +136,45 @@ void JointConstraints::EvaluateJoint(Index j, const AnchorMotion& m1, const Anch
       for (int k = 0; k < n2; ++k) r.gradient[n1 + k] = -m2.a[k].row(i).transpose();
     }
   }
-  switch (joint.type) {
-    case IdealJoint::Type::kSpherical:
-      break;
-    case IdealJoint::Type::kRevolute: {
-      // Perpendicularity g = d₁·e, d₁ = R₁ u, e = R₂ w: with δR = R δψ̃,
-      // ∂g/∂ψ₁ = u × (R₁ᵀ e), ∂g/∂ψ₂ = w × (R₂ᵀ d₁) (Bauchau 2011), and
-      // g̈ = G a + (ω₁ × (ω₁ × d₁))·e + 2 (ω₁ × d₁)·(ω₂ × e) + d₁·(ω₂ × (ω₂ × e)).
-      const Vector3d& u = joint.axis_in_first;
-      const Vector3d d1 = r1 * u;
-      for (const Vector3d* w : {&joint.normal1_in_second, &joint.normal2_in_second}) {
-        const Vector3d e = r2 * *w;
-        const double convective = w1.cross(w1.cross(d1)).dot(e) +
-                                  2.0 * w1.cross(d1).dot(w2.cross(e)) +
-                                  d1.dot(w2.cross(w2.cross(e)));
-        Row& r = next_row(d1.dot(e), convective, 1.0);
-        if (IsBody(m1)) r.gradient[psi1] = u.cross(r1.transpose() * e);
-        if (IsBody(m2)) r.gradient[psi2] = w->cross(r2.transpose() * d1);
-      }
-      break;
+  if (HasInPlane(joint.type)) {
+    // In-plane g = d·e, d = c₁ − c₂, e = R₂ w: G = (A₁_bᵀ e, −A₂_bᵀ e) plus w × (R₂ᵀ d) on ψ₂;
+    // g̈ = G a + (Ġv of d)·e + 2 ḋ·(ω₂ × e) + d·(ω₂ × (ω₂ × e)).
+    for (const Vector3d* w : {&joint.normal1_in_second, &joint.normal2_in_second}) {
+      const Vector3d e = r2 * *w;
+      const double convective = d_convective.dot(e) + 2.0 * d_rate.dot(w2.cross(e)) +
+                                d.dot(w2.cross(w2.cross(e)));
+      Row& r = next_row(d.dot(e), convective, length);
+      for (int k = 0; k < n1; ++k) r.gradient[k] = m1.a[k].transpose() * e;
+      for (int k = 0; k < n2; ++k) r.gradient[n1 + k] = -m2.a[k].transpose() * e;
+      if (IsBody(m2)) r.gradient[psi2] += w->cross(r2.transpose() * d);
     }
-    case IdealJoint::Type::kLine: {
-      // In-plane g = d·e, d = c₁ − c₂, e = R₂ w: G = (A₁_bᵀ e, −A₂_bᵀ e) plus w × (R₂ᵀ d) on ψ₂;
-      // g̈ = G a + (Ġv of d)·e + 2 ḋ·(ω₂ × e) + d·(ω₂ × (ω₂ × e)).
-      for (const Vector3d* w : {&joint.normal1_in_second, &joint.normal2_in_second}) {
-        const Vector3d e = r2 * *w;
-        const double convective = d_convective.dot(e) + 2.0 * d_rate.dot(w2.cross(e)) +
-                                  d.dot(w2.cross(w2.cross(e)));
-        Row& r = next_row(d.dot(e), convective, length);
-        for (int k = 0; k < n1; ++k) r.gradient[k] = m1.a[k].transpose() * e;
-        for (int k = 0; k < n2; ++k) r.gradient[n1 + k] = -m2.a[k].transpose() * e;
-        if (IsBody(m2)) r.gradient[psi2] += w->cross(r2.transpose() * d);
-      }
-      break;
-    }
-    case IdealJoint::Type::kWeld: {
-      // Slope g = r'₁ − R₂ t: G = (w'_b I, R₂ t̃ on ψ₂), Ġv = −ω₂ × (ω₂ × R₂ t).
-      const Vector3d slope = r2 * joint.slope_in_second;
-      const Vector3d convective = -w2.cross(w2.cross(slope));
-      const Matrix3d on_psi2 = r2 * Skew(joint.slope_in_second);
-      for (int i = 0; i < 3; ++i) {
-        Row& r = next_row(m1.slope[i] - slope[i], convective[i], 1.0);
-        for (int k = 0; k < n1; ++k) r.gradient[k] = m1.slope_weight[k] * Vector3d::Unit(i);
-        if (IsBody(m2)) r.gradient[psi2] = on_psi2.row(i).transpose();
-      }
-      break;
+  }
+  // Perpendicularity g = d₁·e, d₁ = R₁ u, e = R₂ w: with δR = R δψ̃,
+  // ∂g/∂ψ₁ = u × (R₁ᵀ e), ∂g/∂ψ₂ = w × (R₂ᵀ d₁) (Bauchau 2011), and
+  // g̈ = G a + (ω₁ × (ω₁ × d₁))·e + 2 (ω₁ × d₁)·(ω₂ × e) + d₁·(ω₂ × (ω₂ × e)).
+  std::array<Perpendicular, 3> perpendiculars;
+  const int num_perpendiculars = CollectPerpendiculars(joint, &perpendiculars);
+  for (int p = 0; p < num_perpendiculars; ++p) {
+    const Vector3d& u = *perpendiculars[p].u;
+    const Vector3d& w = *perpendiculars[p].w;
+    const Vector3d d1 = r1 * u;
+    const Vector3d e = r2 * w;
+    const double convective = w1.cross(w1.cross(d1)).dot(e) +
+                              2.0 * w1.cross(d1).dot(w2.cross(e)) +
+                              d1.dot(w2.cross(w2.cross(e)));
+    Row& r = next_row(d1.dot(e), convective, 1.0);
+    if (IsBody(m1)) r.gradient[psi1] = u.cross(r1.transpose() * e);
+    if (IsBody(m2)) r.gradient[psi2] = w.cross(r2.transpose() * d1);
+  }
+  if (joint.type == IdealJoint::Type::kWeld) {
+    // Slope g = r'₁ − R₂ t: G = (w'_b I, R₂ t̃ on ψ₂), Ġv = −ω₂ × (ω₂ × R₂ t).
+    const Vector3d slope = r2 * joint.slope_in_second;
+    const Vector3d convective = -w2.cross(w2.cross(slope));
+    const Matrix3d on_psi2 = r2 * Skew(joint.slope_in_second);
+    for (int i = 0; i < 3; ++i) {
+      Row& r = next_row(m1.slope[i] - slope[i], convective[i], 1.0);
+      for (int k = 0; k < n1; ++k) r.gradient[k] = m1.slope_weight[k] * Vector3d::Unit(i);
+      if (IsBody(m2)) r.gradient[psi2] = on_psi2.row(i).transpose();
     }
   }
 }
@@ -169,33 +199,26 @@ JointReaction JointConstraints::CalcReaction(Index joint, const VectorXd& lambda
   const Matrix3d& r2 = m2.rotation;
   Index row = first_row_[joint];
   JointReaction reaction;
-  if (spec.type != IdealJoint::Type::kLine) {
+  if (HasCoincidence(spec.type)) {
     reaction.force = lambda.segment<3>(row);
     row += 3;
   }
-  switch (spec.type) {
-    case IdealJoint::Type::kSpherical:
-      break;
-    case IdealJoint::Type::kRevolute: {
-      // −λ R₂ (w × R₂ᵀ d₁) = λ d₁ × e.
-      const Vector3d d1 = m1.rotation * spec.axis_in_first;
-      for (const Vector3d* w : {&spec.normal1_in_second, &spec.normal2_in_second})
-        reaction.moment += lambda[row++] * d1.cross(r2 * *w);
-      break;
-    }
-    case IdealJoint::Type::kLine: {
-      // λ e on the second, acting at the first's centre on the line: about c₂ its moment is
-      // d × λ e, the −λ R₂ (w × R₂ᵀ d) of the rows on ψ₂.
-      for (const Vector3d* w : {&spec.normal1_in_second, &spec.normal2_in_second})
-        reaction.force += lambda[row++] * (r2 * *w);
-      reaction.moment = (m1.center - m2.center).cross(reaction.force);
-      break;
-    }
-    case IdealJoint::Type::kWeld:
-      // −R₂ (R₂ t̃)ᵀ λ = (R₂ t) × λ.
-      reaction.moment = (r2 * spec.slope_in_second).cross(lambda.segment<3>(row));
-      break;
+  if (HasInPlane(spec.type)) {
+    // λ e on the second, acting at the first's centre on the line: about c₂ its moment is
+    // d × λ e, the −λ R₂ (w × R₂ᵀ d) of the rows on ψ₂.
+    for (const Vector3d* w : {&spec.normal1_in_second, &spec.normal2_in_second})
+      reaction.force += lambda[row++] * (r2 * *w);
+    reaction.moment = (m1.center - m2.center).cross(reaction.force);
   }
+  // A perpendicularity equation's −λ R₂ (w × R₂ᵀ d₁) = λ d₁ × e.
+  std::array<Perpendicular, 3> perpendiculars;
+  const int num_perpendiculars = CollectPerpendiculars(spec, &perpendiculars);
+  for (int p = 0; p < num_perpendiculars; ++p)
+    reaction.moment +=
+        lambda[row++] * (m1.rotation * *perpendiculars[p].u).cross(r2 * *perpendiculars[p].w);
+  if (spec.type == IdealJoint::Type::kWeld)
+    // −R₂ (R₂ t̃)ᵀ λ = (R₂ t) × λ.
+    reaction.moment = (r2 * spec.slope_in_second).cross(lambda.segment<3>(row));
   return reaction;
 }
 
@@ -240,61 +263,54 @@ void JointConstraints::AddGeometricStiffness(const VectorXd& lambda, double scal
           h[n1 + k][n1 + l] += m2.GeometricStiffness(k, l, -f, Vector3d::Zero());
     };
     Index row = first_row_[j];
-    const Vector3d& u = joint.axis_in_first;
-    if (joint.type != IdealJoint::Type::kLine) {
+    const Matrix3d& r1 = m1.rotation;
+    const Matrix3d& r2 = m2.rotation;
+    if (HasCoincidence(joint.type)) {
       add_center_force(lambda.segment<3>(row));
       row += 3;
     }
-    const Matrix3d& r1 = m1.rotation;
-    const Matrix3d& r2 = m2.rotation;
-    switch (joint.type) {
-      case IdealJoint::Type::kSpherical:
-        break;
-      case IdealJoint::Type::kRevolute: {
-        // ∂/∂ψ₁ (u × R₁ᵀ e) = ũ (R₁ᵀ e)~, ∂/∂ψ₂ (u × R₁ᵀ e) = −ũ R₁ᵀ R₂ w̃, and the same with
-        // the sides exchanged.
-        const Vector3d d1 = r1 * u;
-        for (const Vector3d* w : {&joint.normal1_in_second, &joint.normal2_in_second}) {
-          const double l = lambda[row++];
-          const Vector3d e = r2 * *w;
-          if (IsBody(m1)) h[psi1][psi1] += l * Skew(u) * Skew(r1.transpose() * e);
-          if (IsBody(m2)) h[psi2][psi2] += l * Skew(*w) * Skew(r2.transpose() * d1);
-          if (IsBody(m1) && IsBody(m2)) {
-            h[psi1][psi2] -= l * Skew(u) * r1.transpose() * r2 * Skew(*w);
-            h[psi2][psi1] -= l * Skew(*w) * r2.transpose() * r1 * Skew(u);
-          }
+    if (HasInPlane(joint.type)) {
+      const Vector3d d = m1.center - m2.center;
+      for (const Vector3d* w : {&joint.normal1_in_second, &joint.normal2_in_second}) {
+        const double l = lambda[row++];
+        const Vector3d e = r2 * *w;
+        add_center_force(l * e);
+        if (!IsBody(m2)) continue;
+        // e turns with the second: ∂e/∂ψ₂ = −R₂ w̃, and its gradient w × (R₂ᵀ d) on ψ₂
+        // depends on d and R₂.
+        const Matrix3d de = -r2 * Skew(*w);
+        for (int k = 0; k < n1; ++k) {
+          h[k][psi2] += l * m1.a[k].transpose() * de;
+          h[psi2][k] += l * Skew(*w) * r2.transpose() * m1.a[k];
         }
-        break;
-      }
-      case IdealJoint::Type::kLine: {
-        const Vector3d d = m1.center - m2.center;
-        for (const Vector3d* w : {&joint.normal1_in_second, &joint.normal2_in_second}) {
-          const double l = lambda[row++];
-          const Vector3d e = r2 * *w;
-          add_center_force(l * e);
-          if (!IsBody(m2)) continue;
-          // e turns with the second: ∂e/∂ψ₂ = −R₂ w̃, and its gradient w × (R₂ᵀ d) on ψ₂
-          // depends on d and R₂.
-          const Matrix3d de = -r2 * Skew(*w);
-          for (int k = 0; k < n1; ++k) {
-            h[k][psi2] += l * m1.a[k].transpose() * de;
-            h[psi2][k] += l * Skew(*w) * r2.transpose() * m1.a[k];
-          }
-          for (int k = 0; k < m2.num_blocks; ++k) {
-            h[n1 + k][psi2] -= l * m2.a[k].transpose() * de;
-            h[psi2][n1 + k] -= l * Skew(*w) * r2.transpose() * m2.a[k];
-          }
-          h[psi2][psi2] += l * Skew(*w) * Skew(r2.transpose() * d);
+        for (int k = 0; k < m2.num_blocks; ++k) {
+          h[n1 + k][psi2] -= l * m2.a[k].transpose() * de;
+          h[psi2][n1 + k] -= l * Skew(*w) * r2.transpose() * m2.a[k];
         }
-        break;
+        h[psi2][psi2] += l * Skew(*w) * Skew(r2.transpose() * d);
       }
-      case IdealJoint::Type::kWeld:
-        // ∂/∂ψ₂ ((R₂ t̃)ᵀ λ) = −t̃ (R₂ᵀ λ)~.
-        if (IsBody(m2))
-          h[psi2][psi2] -= Skew(joint.slope_in_second) *
-                           Skew(r2.transpose() * lambda.segment<3>(row));
-        break;
     }
+    // ∂/∂ψ₁ (u × R₁ᵀ e) = ũ (R₁ᵀ e)~, ∂/∂ψ₂ (u × R₁ᵀ e) = −ũ R₁ᵀ R₂ w̃, and the same with the
+    // sides exchanged.
+    std::array<Perpendicular, 3> perpendiculars;
+    const int num_perpendiculars = CollectPerpendiculars(joint, &perpendiculars);
+    for (int p = 0; p < num_perpendiculars; ++p) {
+      const Vector3d& u = *perpendiculars[p].u;
+      const Vector3d& w = *perpendiculars[p].w;
+      const double l = lambda[row++];
+      const Vector3d d1 = r1 * u;
+      const Vector3d e = r2 * w;
+      if (IsBody(m1)) h[psi1][psi1] += l * Skew(u) * Skew(r1.transpose() * e);
+      if (IsBody(m2)) h[psi2][psi2] += l * Skew(w) * Skew(r2.transpose() * d1);
+      if (IsBody(m1) && IsBody(m2)) {
+        h[psi1][psi2] -= l * Skew(u) * r1.transpose() * r2 * Skew(w);
+        h[psi2][psi1] -= l * Skew(w) * r2.transpose() * r1 * Skew(u);
+      }
+    }
+    if (joint.type == IdealJoint::Type::kWeld && IsBody(m2))
+      // ∂/∂ψ₂ ((R₂ t̃)ᵀ λ) = −t̃ (R₂ᵀ λ)~.
+      h[psi2][psi2] -=
+          Skew(joint.slope_in_second) * Skew(r2.transpose() * lambda.segment<3>(row));
     for (int k = 0; k < n; ++k)
       for (int l = 0; l < n; ++l)
         matrix->AddIdealJointBlock(static_cast<Index>(j), k, l, h[k][l], scale);

@@ -3,10 +3,12 @@
 /// Jacobian G = ∂g/∂q, the reaction Gᵀλ of the multipliers λ with its geometric stiffness
 /// ∂(Gᵀλ)/∂q, the convective term Ġv of g̈ = G a + Ġv, and the bordered matrix [S Gᵀ; G 0]
 /// the static solver and generalised-α factorise. Each joint is made of three kinds of equation
-/// on its anchors' motions (forces/joint_anchor.hpp; a body turns as δR = R δψ̃):
+/// on its anchors' motions (forces/joint_anchor.hpp; a body turns as δR = R δψ̃), its rows in
+/// this order:
 ///   coincidence   c₁ − c₂ = 0                  (spherical, revolute, weld)
-///   perpendicular (R₁ u)·(R₂ w) = 0            (revolute: the axis u against w₁, w₂)
-///   in-plane      (c₁ − c₂)·(R₂ w) = 0         (line)
+///   in-plane      (c₁ − c₂)·(R₂ w) = 0         (line, prismatic: w₁, w₂)
+///   perpendicular (R₁ u)·(R₂ w) = 0            (revolute: the axis u against w₁, w₂;
+///                                               prismatic: the same and v against w₂)
 ///   slope         r'₁ − R₂ t = 0               (weld)
 /// Géradin & Cardona (2001); Bauchau (2011). docs/theory.md, "Ideal joints".
 

@@ -13,7 +13,8 @@ const std::vector<std::pair<std::string_view, IdealJoint::Type>> kTypes = {
     {"spherical", IdealJoint::Type::kSpherical},
     {"revolute", IdealJoint::Type::kRevolute},
     {"weld", IdealJoint::Type::kWeld},
-    {"line", IdealJoint::Type::kLine}};
+    {"line", IdealJoint::Type::kLine},
+    {"prismatic", IdealJoint::Type::kPrismatic}};
 
 }  // namespace
 
@@ -31,8 +32,8 @@ void ReadIdealJoint(const YamlValue& item,
   const YamlValue name = map.Get("name");
   spec.name = name.AsString();
   spec.type = map.Get("type").AsEnum<IdealJoint::Type>(kTypes);
-  const bool has_axis =
-      spec.type == IdealJoint::Type::kRevolute || spec.type == IdealJoint::Type::kLine;
+  const bool has_axis = spec.type != IdealJoint::Type::kSpherical &&
+                        spec.type != IdealJoint::Type::kWeld;
   if (has_axis)
     map.CheckKeys({"name", "type", "between", "point", "axis"});
   else

@@ -1,7 +1,7 @@
 #pragma once
 /// @file Reads one ideal joint of a scene's `joints` list (model/ideal_joint_spec.hpp):
-///   {name, type: spherical | revolute | weld | line, between: [ANCHOR, ANCHOR],
-///    point: [x, y, z], axis: [x, y, z] (revolute, line; default [0, 0, 1])}
+///   {name, type: spherical | revolute | weld | line | prismatic, between: [ANCHOR, ANCHOR],
+///    point: [x, y, z], axis: [x, y, z] (revolute, line, prismatic; default [0, 0, 1])}
 /// ANCHOR as for clearance joints (io/joint_anchor_reader.hpp). `point` places a ground or body
 /// side that has no point of its own (default: the other side's cable point or point mass).
 

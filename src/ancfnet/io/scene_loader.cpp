@@ -389,8 +389,8 @@ Scene ReadScene(const YamlValue& root, const std::filesystem::path& scene_direct
       const auto type = item.IsMap() ? item.AsMap().Find("type") : std::nullopt;
       // One list of the types for the message of a misspelt one.
       if (type)
-        type->AsChoice({"spherical", "revolute", "weld", "line", "revolute_clearance",
-                        "spherical_clearance"});
+        type->AsChoice({"spherical", "revolute", "weld", "line", "prismatic",
+                        "revolute_clearance", "spherical_clearance"});
       if (type && IsIdealJointType(type->AsString()))
         ReadIdealJoint(item, read_point, &builder);
       else

@@ -37,6 +37,8 @@ const char* TypeName(IdealJoint::Type type) {
       return "weld";
     case IdealJoint::Type::kLine:
       return "line";
+    case IdealJoint::Type::kPrismatic:
+      return "prismatic";
   }
   return "";
 }
@@ -89,10 +91,12 @@ void ModelBuilder::AddIdealJoint(const IdealJointSpec& spec) {
     }
   }
   const char* type = TypeName(spec.type);
-  if (spec.type == IdealJoint::Type::kRevolute && !(IsFrame(joint.first) && IsFrame(joint.second)))
+  const bool turns_with_its_sides =
+      spec.type == IdealJoint::Type::kRevolute || spec.type == IdealJoint::Type::kPrismatic;
+  if (turns_with_its_sides && !(IsFrame(joint.first) && IsFrame(joint.second)))
     throw InputError(fmt::format(
-        "a {} joint turns about an axis fixed in its sides: each side must be the ground or a "
-        "body, not a cable point or point mass",
+        "a {} joint's axis is fixed in its sides: each side must be the ground or a body, not a "
+        "cable point or point mass",
         type));
   if (spec.type == IdealJoint::Type::kLine && !IsFrame(joint.second))
     throw InputError(fmt::format(
@@ -112,17 +116,20 @@ void ModelBuilder::AddIdealJoint(const IdealJointSpec& spec) {
   const Vector3d normal1 = axis.unitOrthogonal();
   const Vector3d normal2 = axis.cross(normal1);
   joint.axis_in_first = r1.transpose() * axis;
+  joint.normal1_in_first = r1.transpose() * normal1;
   joint.normal1_in_second = r2.transpose() * normal1;
   joint.normal2_in_second = r2.transpose() * normal2;
   Vector3d gap = c1 - c2;
-  if (spec.type == IdealJoint::Type::kLine) gap -= gap.dot(axis) * axis;
+  const bool on_a_line =
+      spec.type == IdealJoint::Type::kLine || spec.type == IdealJoint::Type::kPrismatic;
+  if (on_a_line) gap -= gap.dot(axis) * axis;
   const double tolerance = kCoincidenceTolerance * std::max({1.0, c1.norm(), c2.norm()});
   if (gap.norm() > tolerance)
     throw InputError(fmt::format(
         "the two sides of {} joint '{}' are {:.6g} m apart at t = 0 ({}); give the joint's "
         "`point` or the sides' points so that they meet",
         type, spec.name, gap.norm(),
-        spec.type == IdealJoint::Type::kLine ? "from the line" : "between their points"));
+        on_a_line ? "from the line" : "between their points"));
   if (spec.type == IdealJoint::Type::kWeld) {
     Vector3d slope = Vector3d::Zero();
     for (int k = 0; k < joint.first.num_blocks; ++k)

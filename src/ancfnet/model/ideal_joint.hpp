@@ -11,7 +11,7 @@
 
 namespace ancfnet {
 
-/// A spherical, revolute, weld or line joint between `first` and `second`.
+/// A spherical, revolute, weld, line or prismatic joint between `first` and `second`.
 struct IdealJoint {
   enum class Type {
     kSpherical,  ///< the two centres coincide: c₁ − c₂ = 0 (3 equations)
@@ -21,14 +21,20 @@ struct IdealJoint {
                  ///< follow the second (6 equations)
     kLine,       ///< the first's centre stays on the line through the second's centre along
                  ///< the axis: (c₁ − c₂)·(R₂ w_k) = 0, k = 1, 2 (2 equations)
+    kPrismatic,  ///< line, and the orientations locked: (R₁ u)·(R₂ w₁) = (R₁ u)·(R₂ w₂) =
+                 ///< (R₁ v)·(R₂ w₂) = 0 (5 equations; body or ground each side)
   };
   std::string name;
   Type type = Type::kSpherical;
   JointAnchor first;
   JointAnchor second;
-  /// kRevolute: the axis u in the first's frame (unit; the world frame for the ground).
+  /// kRevolute, kPrismatic: the axis u in the first's frame (unit; the world frame for the
+  /// ground).
   Vector3d axis_in_first = Vector3d::UnitZ();
-  /// kRevolute, kLine: two unit directions w₁, w₂ normal to the axis, in the second's frame.
+  /// kPrismatic: v, the direction of w₁ at t = 0, in the first's frame.
+  Vector3d normal1_in_first = Vector3d::UnitX();
+  /// kRevolute, kLine, kPrismatic: two unit directions w₁, w₂ normal to the axis, in the
+  /// second's frame.
   Vector3d normal1_in_second = Vector3d::UnitX();
   Vector3d normal2_in_second = Vector3d::UnitY();
   /// kWeld: the cable's slope t at t = 0 in the second's frame (not normalised: its length is
@@ -46,6 +52,8 @@ struct IdealJoint {
         return 6;
       case Type::kLine:
         return 2;
+      case Type::kPrismatic:
+        return 5;
     }
     return 0;
   }

@@ -19,7 +19,7 @@ struct IdealJointSpec {
   /// The joint's point at t = 0 (m, world), for a side that is the ground or a body without a
   /// position of its own. Default: the centre of a side that is a cable point or point mass.
   std::optional<Vector3d> point = std::nullopt;
-  /// kRevolute, kLine: the axis at t = 0 (world), non-zero (normalised when added).
+  /// kRevolute, kLine, kPrismatic: the axis at t = 0 (world), non-zero (normalised when added).
   Vector3d axis = Vector3d::UnitZ();
 };
 

@@ -160,8 +160,15 @@ TEST(JointConstraints, LineDerivativesMatchDifferences) {
   ExpectDerivativesMatch({"body-ground", Type::kLine, Kind::kBody, Kind::kGround});
 }
 
+TEST(JointConstraints, PrismaticDerivativesMatchDifferences) {
+  ExpectDerivativesMatch({"body-body", Type::kPrismatic, Kind::kBody, Kind::kBody});
+  ExpectDerivativesMatch({"ground-body", Type::kPrismatic, Kind::kGround, Kind::kBody});
+  ExpectDerivativesMatch({"body-ground", Type::kPrismatic, Kind::kBody, Kind::kGround});
+}
+
 TEST(JointConstraints, HoldAtTheInitialState) {
   for (const Case& c : {Case{"revolute", Type::kRevolute, Kind::kBody, Kind::kBody},
+                        Case{"prismatic", Type::kPrismatic, Kind::kBody, Kind::kBody},
                         Case{"weld", Type::kWeld, Kind::kPoint, Kind::kBody},
                         Case{"line", Type::kLine, Kind::kPoint, Kind::kBody}}) {
     const Model model = MakeModel(c);
@@ -190,6 +197,9 @@ TEST(JointConstraints, BuilderRefusesInvalidJoints) {
   EXPECT_THROW(builder.AddIdealJoint(
                    {.name = "x", .type = Type::kRevolute, .first = rope, .second = body}),
                InputError);  // a revolute joint's sides must turn
+  EXPECT_THROW(builder.AddIdealJoint(
+                   {.name = "x", .type = Type::kPrismatic, .first = body, .second = rope}),
+               InputError);  // and a prismatic joint's
   EXPECT_THROW(builder.AddIdealJoint({.name = "x",
                                       .type = Type::kRevolute,
                                       .first = {.kind = Kind::kGround},
