@@ -54,6 +54,15 @@ int CollectPerpendiculars(const IdealJoint& joint, std::array<Perpendicular, 3>*
   }
 }
 
+// The first side's direction of a perpendicularity equation: R₁ u for the ground or a body, the
+// slope r' itself for a cable point (a revolute joint about the cable's tangent), and its rate.
+Vector3d FirstDirection(const AnchorMotion& m, const Vector3d& u) {
+  return m.has_slope ? m.slope : Vector3d(m.rotation * u);
+}
+Vector3d FirstDirectionRate(const AnchorMotion& m, const Vector3d& u) {
+  return m.has_slope ? m.slope_rate : Vector3d(m.angular_velocity.cross(m.rotation * u));
+}
+
 // The blocks of an anchor in the order of AnchorMotion (and of SystemMatrix's joint couplings).
 void AppendBlocks(const Model& model, const JointAnchor& anchor, std::vector<Index>* blocks) {
   if (anchor.kind == JointAnchor::Kind::kBody) {
@@ -151,19 +160,22 @@ void JointConstraints::EvaluateJoint(Index j, const AnchorMotion& m1, const Anch
   }
   // Perpendicularity g = d₁·e, d₁ = R₁ u, e = R₂ w: with δR = R δψ̃,
   // ∂g/∂ψ₁ = u × (R₁ᵀ e), ∂g/∂ψ₂ = w × (R₂ᵀ d₁) (Bauchau 2011), and
-  // g̈ = G a + (ω₁ × (ω₁ × d₁))·e + 2 (ω₁ × d₁)·(ω₂ × e) + d₁·(ω₂ × (ω₂ × e)).
+  // g̈ = G a + (ω₁ × (ω₁ × d₁))·e + 2 ḋ₁·(ω₂ × e) + d₁·(ω₂ × (ω₂ × e)). On a cable point
+  // d₁ = r' = Σ w'_b q_b, linear in q: ∂g/∂q_b = w'_b e and no convective term of its own.
   std::array<Perpendicular, 3> perpendiculars;
   const int num_perpendiculars = CollectPerpendiculars(joint, &perpendiculars);
   for (int p = 0; p < num_perpendiculars; ++p) {
     const Vector3d& u = *perpendiculars[p].u;
     const Vector3d& w = *perpendiculars[p].w;
-    const Vector3d d1 = r1 * u;
+    const Vector3d d1 = FirstDirection(m1, u);
+    const Vector3d d1_rate = FirstDirectionRate(m1, u);
     const Vector3d e = r2 * w;
-    const double convective = w1.cross(w1.cross(d1)).dot(e) +
-                              2.0 * w1.cross(d1).dot(w2.cross(e)) +
-                              d1.dot(w2.cross(w2.cross(e)));
+    const double convective = (m1.has_slope ? 0.0 : w1.cross(w1.cross(d1)).dot(e)) +
+                              2.0 * d1_rate.dot(w2.cross(e)) + d1.dot(w2.cross(w2.cross(e)));
     Row& r = next_row(d1.dot(e), convective, 1.0);
     if (IsBody(m1)) r.gradient[psi1] = u.cross(r1.transpose() * e);
+    if (m1.has_slope)
+      for (int k = 0; k < n1; ++k) r.gradient[k] = m1.slope_weight[k] * e;
     if (IsBody(m2)) r.gradient[psi2] = w.cross(r2.transpose() * d1);
   }
   if (joint.type == IdealJoint::Type::kWeld) {
@@ -214,8 +226,8 @@ JointReaction JointConstraints::CalcReaction(Index joint, const VectorXd& lambda
   std::array<Perpendicular, 3> perpendiculars;
   const int num_perpendiculars = CollectPerpendiculars(spec, &perpendiculars);
   for (int p = 0; p < num_perpendiculars; ++p)
-    reaction.moment +=
-        lambda[row++] * (m1.rotation * *perpendiculars[p].u).cross(r2 * *perpendiculars[p].w);
+    reaction.moment += lambda[row++] * FirstDirection(m1, *perpendiculars[p].u)
+                                           .cross(r2 * *perpendiculars[p].w);
   if (spec.type == IdealJoint::Type::kWeld)
     // −R₂ (R₂ t̃)ᵀ λ = (R₂ t) × λ.
     reaction.moment = (r2 * spec.slope_in_second).cross(lambda.segment<3>(row));
@@ -298,7 +310,7 @@ void JointConstraints::AddGeometricStiffness(const VectorXd& lambda, double scal
       const Vector3d& u = *perpendiculars[p].u;
       const Vector3d& w = *perpendiculars[p].w;
       const double l = lambda[row++];
-      const Vector3d d1 = r1 * u;
+      const Vector3d d1 = FirstDirection(m1, u);
       const Vector3d e = r2 * w;
       if (IsBody(m1)) h[psi1][psi1] += l * Skew(u) * Skew(r1.transpose() * e);
       if (IsBody(m2)) h[psi2][psi2] += l * Skew(w) * Skew(r2.transpose() * d1);
@@ -306,6 +318,13 @@ void JointConstraints::AddGeometricStiffness(const VectorXd& lambda, double scal
         h[psi1][psi2] -= l * Skew(u) * r1.transpose() * r2 * Skew(w);
         h[psi2][psi1] -= l * Skew(w) * r2.transpose() * r1 * Skew(u);
       }
+      // A cable point's slope against a turning second side: ∂(w'_k e)/∂ψ₂ = −w'_k R₂ w̃ and
+      // ∂(w × R₂ᵀ r')/∂q_k = w'_k w̃ R₂ᵀ.
+      if (m1.has_slope && IsBody(m2))
+        for (int k = 0; k < n1; ++k) {
+          h[k][psi2] -= l * m1.slope_weight[k] * r2 * Skew(w);
+          h[psi2][k] += l * m1.slope_weight[k] * Skew(w) * r2.transpose();
+        }
     }
     if (joint.type == IdealJoint::Type::kWeld && IsBody(m2))
       // ∂/∂ψ₂ ((R₂ t̃)ᵀ λ) = −t̃ (R₂ᵀ λ)~.

@@ -8,7 +8,8 @@
 ///   coincidence   c₁ − c₂ = 0                  (spherical, revolute, weld)
 ///   in-plane      (c₁ − c₂)·(R₂ w) = 0         (line, prismatic: w₁, w₂)
 ///   perpendicular (R₁ u)·(R₂ w) = 0            (revolute: the axis u against w₁, w₂;
-///                                               prismatic: the same and v against w₂)
+///                                               prismatic: the same and v against w₂;
+///                                               r'·(R₂ w) for a revolute on a cable point)
 ///   slope         r'₁ − R₂ t = 0               (weld)
 /// Géradin & Cardona (2001); Bauchau (2011). docs/theory.md, "Ideal joints".
 

@@ -17,6 +17,8 @@ namespace {
 // Distance below which the two sides of a joint coincide at t = 0, relative to their distance
 // from the origin (or 1 m).
 constexpr double kCoincidenceTolerance = 1e-9;
+// Angle (rad) within which a cable-point revolute joint's axis is along the cable's tangent.
+constexpr double kParallelTolerance = 1e-6;
 
 bool IsFrame(const JointAnchor& anchor) { return anchor.kind != JointAnchor::Kind::kPoint; }
 
@@ -25,6 +27,14 @@ Matrix3d InitialFrame(const Model& model, const JointAnchor& anchor) {
   if (anchor.kind == JointAnchor::Kind::kBody)
     return model.rigid_bodies()[anchor.body].initial_orientation;
   return Matrix3d::Identity();
+}
+
+// The slope r' at t = 0 of a cable point.
+Vector3d InitialSlope(const Model& model, const JointAnchor& anchor) {
+  Vector3d slope = Vector3d::Zero();
+  for (int k = 0; k < anchor.num_blocks; ++k)
+    slope += anchor.slope_weight[k] * model.initial_positions().segment<3>(anchor.dof[k]);
+  return slope;
 }
 
 const char* TypeName(IdealJoint::Type type) {
@@ -91,13 +101,17 @@ void ModelBuilder::AddIdealJoint(const IdealJointSpec& spec) {
     }
   }
   const char* type = TypeName(spec.type);
+  // A revolute joint may also turn about a cable's tangent: its first side a cable point.
+  const bool first_turns = IsFrame(joint.first) ||
+                           (spec.type == IdealJoint::Type::kRevolute && joint.first.has_slope);
   const bool turns_with_its_sides =
       spec.type == IdealJoint::Type::kRevolute || spec.type == IdealJoint::Type::kPrismatic;
-  if (turns_with_its_sides && !(IsFrame(joint.first) && IsFrame(joint.second)))
+  if (turns_with_its_sides && !(first_turns && IsFrame(joint.second)))
     throw InputError(fmt::format(
-        "a {} joint's axis is fixed in its sides: each side must be the ground or a body, not a "
-        "cable point or point mass",
-        type));
+        "a {} joint's axis is fixed in its sides: each side must be the ground or a body (a "
+        "revolute joint's first side may also be a cable point, turning about its tangent), not "
+        "a point mass{}",
+        type, spec.type == IdealJoint::Type::kPrismatic ? " or cable point" : ""));
   if (spec.type == IdealJoint::Type::kLine && !IsFrame(joint.second))
     throw InputError(fmt::format(
         "second: the line of a {} joint is fixed in its second side, which must be the ground or "
@@ -108,6 +122,14 @@ void ModelBuilder::AddIdealJoint(const IdealJointSpec& spec) {
     throw InputError(
         "a weld joint fixes a cable point (first) to the ground or a body (second)");
 
+  if (spec.type == IdealJoint::Type::kRevolute && joint.first.has_slope) {
+    const Vector3d tangent = InitialSlope(model_, joint.first).normalized();
+    if (spec.axis.normalized().cross(tangent).norm() > kParallelTolerance)
+      throw InputError(fmt::format(
+          "a revolute joint on a cable point turns about the cable's tangent: give `axis` along "
+          "it, [{:.6g}, {:.6g}, {:.6g}]",
+          tangent.x(), tangent.y(), tangent.z()));
+  }
   const Vector3d c1 = CalcInitialAnchorCenter(model_, joint.first);
   const Vector3d c2 = CalcInitialAnchorCenter(model_, joint.second);
   const Vector3d axis = spec.axis.normalized();
@@ -130,13 +152,8 @@ void ModelBuilder::AddIdealJoint(const IdealJointSpec& spec) {
         "`point` or the sides' points so that they meet",
         type, spec.name, gap.norm(),
         on_a_line ? "from the line" : "between their points"));
-  if (spec.type == IdealJoint::Type::kWeld) {
-    Vector3d slope = Vector3d::Zero();
-    for (int k = 0; k < joint.first.num_blocks; ++k)
-      slope += joint.first.slope_weight[k] *
-               model_.initial_positions().segment<3>(joint.first.dof[k]);
-    joint.slope_in_second = r2.transpose() * slope;
-  }
+  if (spec.type == IdealJoint::Type::kWeld)
+    joint.slope_in_second = r2.transpose() * InitialSlope(model_, joint.first);
   model_.ideal_joints_.push_back(joint);
 }
 

@@ -16,7 +16,9 @@ struct IdealJoint {
   enum class Type {
     kSpherical,  ///< the two centres coincide: c₁ − c₂ = 0 (3 equations)
     kRevolute,   ///< spherical, and the first's axis stays normal to two directions fixed in the
-                 ///< second: (R₁ u)·(R₂ w_k) = 0, k = 1, 2 (5 equations; body or ground each side)
+                 ///< second: (R₁ u)·(R₂ w_k) = 0, k = 1, 2 (5 equations; the second side the
+                 ///< ground or a body, the first too or a cable point, whose axis is then its
+                 ///< slope r': r'·(R₂ w_k) = 0)
     kWeld,       ///< a cable point fixed to the second: its centre and its slope r' = R₂ t
                  ///< follow the second (6 equations)
     kLine,       ///< the first's centre stays on the line through the second's centre along

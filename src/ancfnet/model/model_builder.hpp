@@ -113,8 +113,9 @@ class ModelBuilder {
   /// name existing bodies, point masses or cable points, not both the ground. Bodies first.
   void AddClearanceJoint(const ClearanceJointSpec& spec);
   /// Adds an ideal joint (model/ideal_joint_spec.hpp): a name unique among all joints, sides
-  /// that name existing bodies, point masses or cable points, not both the ground; revolute:
-  /// each side the ground or a body; weld: the first a cable point, the second the ground or a
+  /// that name existing bodies, point masses or cable points, not both the ground; revolute and
+  /// prismatic: each side the ground or a body (a revolute's first side may be a cable point, its
+  /// axis along the cable's tangent); weld: the first a cable point, the second the ground or a
   /// body; a non-zero axis; the two sides' points within 1e-9 m (relative to the model's size)
   /// of each other at t = 0. Bodies first.
   void AddIdealJoint(const IdealJointSpec& spec);

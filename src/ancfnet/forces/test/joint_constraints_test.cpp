@@ -35,7 +35,10 @@ Model MakeModel(const Case& c) {
   ModelBuilder builder;
   test::AddTestRope(Vector3d::Zero(), kRopeEnd, &builder);
   builder.SetInitialVelocity("rope", Vector3d(0.01, 0.02, -0.01), Vector3d(1.0, -2.0, 3.0));
-  IdealJointSpec spec{.name = "joint", .type = c.type, .axis = Vector3d(1, -2, 2)};
+  // A revolute joint on the rope turns about its tangent.
+  const bool about_the_rope = c.type == Type::kRevolute && c.first == Kind::kPoint;
+  IdealJointSpec spec{
+      .name = "joint", .type = c.type, .axis = about_the_rope ? kRopeEnd : Vector3d(1, -2, 2)};
   auto side = [&](Kind kind, const char* body, double angle) -> JointAnchorSpec {
     if (kind == Kind::kBody) {
       test::AddSpinningBody(body, kJointPoint + Vector3d(0.02, -0.01, 0.03), angle, &builder);
@@ -147,6 +150,8 @@ TEST(JointConstraints, RevoluteDerivativesMatchDifferences) {
   ExpectDerivativesMatch({"body-body", Type::kRevolute, Kind::kBody, Kind::kBody});
   ExpectDerivativesMatch({"ground-body", Type::kRevolute, Kind::kGround, Kind::kBody});
   ExpectDerivativesMatch({"body-ground", Type::kRevolute, Kind::kBody, Kind::kGround});
+  ExpectDerivativesMatch({"rope-body", Type::kRevolute, Kind::kPoint, Kind::kBody});
+  ExpectDerivativesMatch({"rope-ground", Type::kRevolute, Kind::kPoint, Kind::kGround});
 }
 
 TEST(JointConstraints, WeldDerivativesMatchDifferences) {
@@ -169,6 +174,7 @@ TEST(JointConstraints, PrismaticDerivativesMatchDifferences) {
 TEST(JointConstraints, HoldAtTheInitialState) {
   for (const Case& c : {Case{"revolute", Type::kRevolute, Kind::kBody, Kind::kBody},
                         Case{"prismatic", Type::kPrismatic, Kind::kBody, Kind::kBody},
+                        Case{"revolute on the rope", Type::kRevolute, Kind::kPoint, Kind::kBody},
                         Case{"weld", Type::kWeld, Kind::kPoint, Kind::kBody},
                         Case{"line", Type::kLine, Kind::kPoint, Kind::kBody}}) {
     const Model model = MakeModel(c);
@@ -195,8 +201,14 @@ TEST(JointConstraints, BuilderRefusesInvalidJoints) {
                                       .second = {.kind = Kind::kBody, .name = "nobody"}}),
                InputError);
   EXPECT_THROW(builder.AddIdealJoint(
-                   {.name = "x", .type = Type::kRevolute, .first = rope, .second = body}),
-               InputError);  // a revolute joint's sides must turn
+                   {.name = "x", .type = Type::kRevolute, .first = body, .second = rope}),
+               InputError);  // a revolute joint's second side must turn
+  EXPECT_THROW(builder.AddIdealJoint({.name = "x",
+                                      .type = Type::kRevolute,
+                                      .first = rope,
+                                      .second = body,
+                                      .axis = Vector3d(0, 0, 1)}),
+               InputError);  // on a cable point, about its tangent only
   EXPECT_THROW(builder.AddIdealJoint(
                    {.name = "x", .type = Type::kPrismatic, .first = body, .second = rope}),
                InputError);  // and a prismatic joint's
