@@ -41,21 +41,7 @@ assert drift < 0.01 * launch, (drift, launch)
 PY
 
 # Invalid joints, each the example with one mistake: exit 2, one line FILE:LINE:COL naming the key.
-expect_error() {
-  local case="$1" sed_script="$2" pattern="$3" key="$4"
-  local file="$work/$case.yaml" status=0
-  sed -e "$sed_script" "$scene" >"$file"
-  ! cmp -s "$scene" "$file" || fail "$case: test setup: '$sed_script' changed nothing"
-  local line
-  line="$(grep -n -m1 -E -- "$pattern" "$file" | cut -d: -f1)"
-  "$ancfnet" check "$file" >/dev/null 2>"$work/stderr" || status=$?
-  local message
-  message="$(cat "$work/stderr")"
-  [[ $status -eq 2 ]] || fail "$case: exit $status, expected 2: $message"
-  [[ $(wc -l <"$work/stderr") -eq 1 ]] || fail "$case: stderr is not one line: $message"
-  [[ $message =~ $case\.yaml:$line:[0-9]+: ]] || fail "$case: expected line $line in: $message"
-  [[ $message == *"$key"* ]] || fail "$case: the message does not name '$key': $message"
-}
+source "$root/tests/cli/expect_scene_error.sh"
 
 expect_error negative_clearance 's/clearance: 0.5e-3/clearance: -0.5e-3/' "clearance: -" "clearance"
 expect_error radius_below_clearance 's/journal_radius: 0.01/journal_radius: 0.4e-3/' \

@@ -18,30 +18,17 @@
 #include "ancfnet/forces/clearance_joint_forces.hpp"
 #include "ancfnet/model/model_builder.hpp"
 #include "ancfnet/integrators/dynamic_solver.hpp"
+#include "slider_crank.hpp"
 
 namespace ancfnet {
 namespace {
 
-constexpr double kCrank = 0.05;                                    // r (m)
-constexpr double kRod = 0.12;                                      // l (m)
-constexpr double kOmega = 5000.0 * 2.0 * std::numbers::pi / 60.0;  // rad/s
-constexpr double kPeriod = 2.0 * std::numbers::pi / kOmega;        // s
+using namespace verification::slider_crank;
 
 // Lankarani–Nikravesh joints of stiffness k (N/m^1.5), e = 0.5.
 Model MakeSliderCrank(double clearance, double stiffness = 1e10) {
   ModelBuilder builder;
-  builder.AddRigidBody({.name = "crank",
-                        .mass = 0.30,
-                        .inertia = Vector3d(1e-4, 1e-4, 1e-4).asDiagonal(),
-                        .angular_velocity = Vector3d(0, 0, kOmega),
-                        .motion = BodyMotion::kPrescribed});
-  // At θ = 0 the rod lies along x; the slider is at rest and the rod turns at −r ω/l.
-  builder.AddRigidBody({.name = "rod",
-                        .mass = 0.21,
-                        .inertia = Vector3d(1e-5, 2.5e-4, 2.5e-4).asDiagonal(),
-                        .position = Vector3d(kCrank + 0.5 * kRod, 0, 0),
-                        .velocity = Vector3d(0, 0.5 * kCrank * kOmega, 0),
-                        .angular_velocity = Vector3d(0, 0, -kCrank * kOmega / kRod)});
+  AddCrankAndRod(&builder);
   // The slider: 0.14 kg of steel, 20 mm long, its nodes guided along x (slopes fixed).
   const Material steel{.youngs_modulus = 2.0e11, .density = 7800.0};
   const Vector3d pin(kCrank + kRod, 0, 0);

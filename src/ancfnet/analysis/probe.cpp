@@ -6,6 +6,7 @@
 #include "ancfnet/analysis/cable_tension.hpp"
 #include "ancfnet/analysis/net_metrics.hpp"
 #include "ancfnet/forces/clearance_joint_forces.hpp"
+#include "ancfnet/forces/joint_constraints.hpp"
 #include "ancfnet/forces/link_forces.hpp"
 #include "ancfnet/model/rigid_body_kinematics.hpp"
 #include "ancfnet/state/rigid_body_state.hpp"
@@ -57,6 +58,8 @@ std::vector<std::string> ProbeColumns(const Probe& probe) {
               n + ".friction_force",
               n + ".friction_moment",
               n + ".mode"};
+    case ProbeQuantity::kJointReaction:
+      return {n + ".fx", n + ".fy", n + ".fz", n + ".mx", n + ".my", n + ".mz"};
   }
   return {};
 }
@@ -186,6 +189,14 @@ void EvaluateProbe(const Probe& probe, const Model& model, const State& state,
       values->insert(values->end(),
                      {c.eccentricity.x(), c.eccentricity.y(), c.eccentricity.z(), c.penetration,
                       c.normal_force, c.friction.norm(), moment, static_cast<double>(s.mode)});
+      break;
+    }
+    case ProbeQuantity::kJointReaction: {
+      JointConstraints constraints(model);
+      constraints.Evaluate(state.q, state.v, state.body_rotation);
+      const JointReaction r = constraints.CalcReaction(probe.joint, state.multipliers);
+      values->insert(values->end(), {r.force.x(), r.force.y(), r.force.z(), r.moment.x(),
+                                     r.moment.y(), r.moment.z()});
       break;
     }
   }

@@ -38,6 +38,9 @@ enum class ProbeQuantity {
   /// revolute joint, its magnitude for a spherical one) and the mode (0 free flight, 1 contact,
   /// 2 impact).
   kClearanceJoint,
+  /// NAME.fx/fy/fz, NAME.mx/my/mz: the force (N) an ideal joint applies to its second side and
+  /// its moment about that side's centre (N m), world axes (forces/joint_constraints.hpp).
+  kJointReaction,
 };
 
 /// A named probe. Position and velocity probes read a point (a cable material point or a point
@@ -52,7 +55,9 @@ struct Probe {
   Index link = -1;
   Index body = -1;
   Index target = -1;  ///< kContact: index into ContactSpec::targets, or −1 for every contact
-  Index joint = -1;   ///< kClearanceJoint: index into Model::clearance_joints()
+  /// kClearanceJoint: index into Model::clearance_joints(); kJointReaction: into
+  /// Model::ideal_joints().
+  Index joint = -1;
   Vector3d reference = Vector3d::Zero();  ///< kDistance: the centroid at the start
 };
 

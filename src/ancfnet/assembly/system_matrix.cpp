@@ -32,6 +32,23 @@ void AddPatternEntries(const std::vector<Index>& rows, const std::vector<Index>&
       if (row >= 0 && col >= 0) triplets->emplace_back(row, col, 0.0);
 }
 
+// The blocks of a joint: those of its first anchor, then of its second (a body's x and ψ, a
+// point's blocks, none for the ground).
+std::vector<Index> JointBlocks(const Model& model, const JointAnchor& first,
+                               const JointAnchor& second) {
+  std::vector<Index> group;
+  for (const JointAnchor* anchor : {&first, &second}) {
+    if (anchor->kind == JointAnchor::Kind::kBody) {
+      const RigidBody& body = model.rigid_bodies()[anchor->body];
+      group.push_back(body.position_dof());
+      group.push_back(body.rotation_dof());
+    } else if (anchor->kind == JointAnchor::Kind::kPoint) {
+      group.insert(group.end(), anchor->dof.begin(), anchor->dof.begin() + anchor->num_blocks);
+    }
+  }
+  return group;
+}
+
 std::uint64_t PairKey(Index a, Index b) {
   return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint64_t>(b);
 }
@@ -44,7 +61,8 @@ SystemMatrix::SystemMatrix(const Model& model, const DofMap& dofs)
       num_point_masses_(static_cast<Index>(model.point_masses().size())),
       num_links_(static_cast<Index>(model.links().size())),
       num_bodies_(static_cast<Index>(model.rigid_bodies().size())),
-      num_attachments_(static_cast<Index>(model.body_attachments().size())) {
+      num_attachments_(static_cast<Index>(model.body_attachments().size())),
+      num_clearance_joints_(static_cast<Index>(model.clearance_joints().size())) {
   for (const CableElement& element : model.elements())
     group_blocks_.push_back({element.dofs[0], element.dofs[3], element.dofs[6], element.dofs[9]});
   for (const PointMass& point : model.point_masses()) group_blocks_.push_back({point.dof});
@@ -64,19 +82,10 @@ SystemMatrix::SystemMatrix(const Model& model, const DofMap& dofs)
     group.push_back(body.rotation_dof());
     group_blocks_.push_back(group);
   }
-  for (const ClearanceJoint& joint : model.clearance_joints()) {
-    std::vector<Index> group;
-    for (const JointAnchor* anchor : {&joint.journal, &joint.bearing}) {
-      if (anchor->kind == JointAnchor::Kind::kBody) {
-        const RigidBody& body = model.rigid_bodies()[anchor->body];
-        group.push_back(body.position_dof());
-        group.push_back(body.rotation_dof());
-      } else if (anchor->kind == JointAnchor::Kind::kPoint) {
-        group.insert(group.end(), anchor->dof.begin(), anchor->dof.begin() + anchor->num_blocks);
-      }
-    }
-    group_blocks_.push_back(group);
-  }
+  for (const ClearanceJoint& joint : model.clearance_joints())
+    group_blocks_.push_back(JointBlocks(model, joint.journal, joint.bearing));
+  for (const IdealJoint& joint : model.ideal_joints())
+    group_blocks_.push_back(JointBlocks(model, joint.first, joint.second));
   Rebuild();
 }
 
@@ -220,6 +229,13 @@ void SystemMatrix::AddClearanceJointBlock(Index joint, int i, int j, const Matri
                                           double scale) {
   AddGroupBlock(groups_[num_elements_ + num_point_masses_ + num_links_ + num_bodies_ +
                         num_attachments_ + joint],
+                i, j, block, scale);
+}
+
+void SystemMatrix::AddIdealJointBlock(Index joint, int i, int j, const Matrix3d& block,
+                                      double scale) {
+  AddGroupBlock(groups_[num_elements_ + num_point_masses_ + num_links_ + num_bodies_ +
+                        num_attachments_ + num_clearance_joints_ + joint],
                 i, j, block, scale);
 }
 

@@ -19,7 +19,8 @@ class Model;
 /// (its blocks r_A, r'_A, r_B, r'_B), each point mass (one block), each spring-damper link
 /// (the blocks of its first point, then of its second), each rigid body (x, ψ), each body
 /// attachment (the blocks of its point, then the body's x and ψ), each clearance joint (the blocks
-/// of its journal's anchor, then of its bearing's), and the contact couplings that
+/// of its journal's anchor, then of its bearing's), each ideal joint (its first anchor's blocks,
+/// then its second's), and the contact couplings that
 /// come and go while the model moves (the blocks of one owner, an element, a point mass or a
 /// body, then of the other).
 class SystemMatrix {
@@ -75,6 +76,8 @@ class SystemMatrix {
   /// Adds scale · block to the 3×3 block (i, j) of clearance joint `joint`, its blocks numbered
   /// the journal anchor's, then the bearing anchor's (forces/joint_anchor.hpp).
   void AddClearanceJointBlock(Index joint, int i, int j, const Matrix3d& block, double scale = 1.0);
+  /// The same for ideal joint `joint` (its first anchor's blocks, then its second's).
+  void AddIdealJointBlock(Index joint, int i, int j, const Matrix3d& block, double scale = 1.0);
   /// Adds scale · block to the 3×3 block of rows starting at coordinate `row`, columns at `col`
   /// (both inside one coupling group). Searches the pattern: for rare terms only.
   void AddBlock3(Index row, Index col, const Matrix3d& block, double scale = 1.0);
@@ -111,6 +114,7 @@ class SystemMatrix {
   Index num_links_ = 0;
   Index num_bodies_ = 0;
   Index num_attachments_ = 0;
+  Index num_clearance_joints_ = 0;
   // Index in matrix_.valuePtr() of each group entry, or −1 when its row or column is fixed.
   std::vector<int> slot_;
 };

@@ -68,7 +68,7 @@ AnchorMotion CalcAnchorMotion(const Model& model, const JointAnchor& anchor, con
   out.has_slope = anchor.has_slope;
   out.slope_weight = anchor.slope_weight;
   out.center = CalcAnchorCenter(model, anchor, q, rotation);
-  Vector3d slope_rate = Vector3d::Zero();
+  Vector3d& slope_rate = out.slope_rate;
   for (int k = 0; k < anchor.num_blocks; ++k) {
     out.velocity += anchor.weight[k] * v.segment<3>(anchor.dof[k]);
     out.slope += anchor.slope_weight[k] * q.segment<3>(anchor.dof[k]);

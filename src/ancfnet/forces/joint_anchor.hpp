@@ -37,6 +37,7 @@ struct AnchorMotion {
   Matrix3d rotation = Matrix3d::Identity();
   Vector3d body_point = Vector3d::Zero();
   Vector3d slope = Vector3d::Zero();
+  Vector3d slope_rate = Vector3d::Zero();  ///< ȧ of a cable point's slope
   JointAnchor::Kind kind = JointAnchor::Kind::kGround;
   bool has_slope = false;
   std::array<double, 4> slope_weight{};

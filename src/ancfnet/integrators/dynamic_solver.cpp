@@ -2,9 +2,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "ancfnet/analysis/energy_tracker.hpp"
+#include "ancfnet/common/error.hpp"
 #include "ancfnet/integrators/explicit_verlet.hpp"
 #include "ancfnet/integrators/generalized_alpha.hpp"
 #include "ancfnet/integrators/implicit_midpoint.hpp"
@@ -63,6 +65,8 @@ SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings, dou
       continue;
     }
     ++result.statistics.steps;
+    result.statistics.max_constraint_violation =
+        std::max(result.statistics.max_constraint_violation, outcome.constraint_violation);
     // Land exactly on output and end times (no round-off from summing steps).
     if (std::abs(state->t - end) <= time_eps) state->t = end;
     if (output_interval > 0.0 && std::abs(state->t - next_output) <= time_eps)
@@ -110,6 +114,13 @@ SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings, dou
 
 SolveResult SolveDynamic(const Model& model, const DynamicSettings& settings,
                          double output_interval, const OutputCallback& output, State* state) {
+  if (model.num_constraint_equations() > 0 &&
+      settings.integrator != IntegratorType::kGeneralizedAlpha)
+    throw InputError(fmt::format(
+        "the {} integrator does not support ideal joints (constraints with Lagrange "
+        "multipliers); use integrator: generalized_alpha",
+        settings.integrator == IntegratorType::kExplicitVerlet ? "explicit_verlet"
+                                                               : "midpoint"));
   switch (settings.integrator) {
     case IntegratorType::kExplicitVerlet: {
       ExplicitVerletIntegrator integrator(model);

@@ -19,6 +19,11 @@ GeneralizedAlphaCoefficients GeneralizedAlphaCoefficients::FromSpectralRadius(do
 //   v_{n+1} = v_n + h (1 − γ) ā_n + h γ ā_{n+1}
 // so ∂q/∂a = β' = h² β (1 − α_f)/(1 − α_m) and ∂v/∂a = γ' = h γ (1 − α_f)/(1 − α_m), and the
 // residual R = M a + Q_int(q, v) − Q_ext(q, t) has the iteration matrix M + γ' C + β' K.
+// With ideal joints the unknowns are (a_{n+1}, λ_{n+1}) and the equations
+//   M a + Q_int − Q_ext + Gᵀλ = 0,   g(q_{n+1})/β' = 0
+// the index-3 form with the constraints scaled by 1/β' (Bottasso, Bauchau & Cardona 2007;
+// Arnold & Brüls 2007), whose iteration matrix [M + γ' C + β' (K + ∂(Gᵀλ)/∂q)  Gᵀ; G  0]
+// stays well conditioned as h → 0 (ImplicitStepCore::CalcIterationMatrix).
 class GeneralizedAlphaIntegrator::StepProblem {
  public:
   StepProblem(GeneralizedAlphaIntegrator& owner, double h, State& state)
@@ -29,7 +34,7 @@ class GeneralizedAlphaIntegrator::StepProblem {
     gamma_prime_ = h * c.gamma * ratio;
   }
 
-  Index size() const { return core_.dofs().num_unknowns(); }
+  Index size() const { return core_.dofs().num_unknowns() + core_.num_constraints(); }
 
   // Starting guess of a_{n+1}, then q and v from the update formulas.
   void Reset() {
@@ -39,6 +44,7 @@ class GeneralizedAlphaIntegrator::StepProblem {
     const std::vector<Index>& free = core_.dofs().coordinates();
     state_.t = prev.t + h_;
     state_.a = prev.a;
+    state_.multipliers = prev.multipliers;
     if (owner_.predictor_ == Predictor::kConstantPosition) {
       // a_{n+1} such that q_{n+1} = q_n: ā_{n+1} = −(h v_n + h² (½ − β) ā_n) / (h² β).
       for (Index i : free) {
@@ -60,20 +66,24 @@ class GeneralizedAlphaIntegrator::StepProblem {
     ApplyPrescribedMotion(core_.model().prescribed(), state_.t, &state_.q, &state_.v, &state_.a);
   }
 
-  void CalcResidual(VectorXd* r) { core_.CalcResidual(state_.q, state_.v, state_.a, r); }
+  void CalcResidual(VectorXd* r) {
+    core_.CalcResidual(state_.q, state_.v, state_.a, state_.multipliers, beta_prime_, r);
+  }
 
   const SparseMatrixd& CalcIterationMatrix() {
     return core_.CalcIterationMatrix(
-        state_.q, state_.v, {.mass = 1.0, .damping = gamma_prime_, .stiffness = beta_prime_});
+        state_.q, state_.v, state_.multipliers, {.mass = 1.0, .damping = gamma_prime_, .stiffness = beta_prime_});
   }
 
   void ApplyIncrement(const VectorXd& da, double scale) {
     core_.dofs().AddExpanded(da, scale, &state_.a);
     core_.dofs().AddExpanded(da, scale * beta_prime_, &state_.q);
     core_.dofs().AddExpanded(da, scale * gamma_prime_, &state_.v);
+    if (core_.num_constraints() > 0)
+      state_.multipliers += scale * da.tail(core_.num_constraints());
   }
 
-  // Convergence is judged on the position increment Δq = β' Δa.
+  // Convergence is judged on the position increment Δq = β' Δa and the constraints' violation.
   double IncrementNorm(const VectorXd& da) const {
     return core_.IncrementNorm(da, state_.q, beta_prime_);
   }
@@ -135,6 +145,7 @@ StepOutcome GeneralizedAlphaIntegrator::Step(double h, State* state) {
     state->q = previous.q;
     state->v = previous.v;
     state->a = previous.a;
+    state->multipliers = previous.multipliers;
     return outcome;
   }
   const GeneralizedAlphaCoefficients& c = coefficients_;
@@ -143,6 +154,7 @@ StepOutcome GeneralizedAlphaIntegrator::Step(double h, State* state) {
         ((1.0 - c.alpha_f) * state->a[i] + c.alpha_f * previous.a[i] - c.alpha_m * a_bar_[i]) /
         (1.0 - c.alpha_m);
   core_.AcceptStep(state);
+  outcome.constraint_violation = core_.ConstraintViolation(state->q, state->v);
   // Forces at the accepted state, and the drive's, for the energy account.
   core_.CalcForces(state->q, state->v);
   core_.CalcDriveForce(*state);

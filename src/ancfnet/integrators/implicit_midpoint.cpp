@@ -36,11 +36,14 @@ class ImplicitMidpointIntegrator::StepProblem {
     }
   }
 
-  void CalcResidual(VectorXd* r) { core_.CalcResidual(mid_.q, mid_.v, state_.a, r); }
+  // Ideal joints are refused (SolveDynamic): no multipliers.
+  void CalcResidual(VectorXd* r) {
+    core_.CalcResidual(mid_.q, mid_.v, state_.a, state_.multipliers, 1.0, r);
+  }
 
   const SparseMatrixd& CalcIterationMatrix() {
     return core_.CalcIterationMatrix(
-        mid_.q, mid_.v, {.mass = 1.0, .damping = 0.5 * h_, .stiffness = 0.25 * h_ * h_});
+        mid_.q, mid_.v, state_.multipliers, {.mass = 1.0, .damping = 0.5 * h_, .stiffness = 0.25 * h_ * h_});
   }
 
   void ApplyIncrement(const VectorXd& da, double scale) {

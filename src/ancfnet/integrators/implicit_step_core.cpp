@@ -1,5 +1,6 @@
 #include "ancfnet/integrators/implicit_step_core.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "ancfnet/forces/clearance_joint_forces.hpp"
@@ -17,6 +18,7 @@ ImplicitStepCore::ImplicitStepCore(const Model& model, const DynamicSettings& se
       ws_(model),
       dofs_(DofMap::FreeCoordinates(model)),
       iteration_matrix_(model, dofs_),
+      constraints_(model),
       newton_(settings.newton, settings.jacobian_update),
       newton_settings_(settings.newton),
       smallest_step_(settings.smallest_step()),
@@ -44,6 +46,7 @@ bool ImplicitStepCore::BeginStep(double h, const State& state) {
   previous_.q = state.q;
   previous_.v = state.v;
   previous_.a = state.a;
+  previous_.multipliers = state.multipliers;
   previous_.contact_history = state.contact_history;
   previous_.body_rotation = state.body_rotation;
   ws_.body_rotation = state.body_rotation;
@@ -82,14 +85,24 @@ std::string ImplicitStepCore::CheckStep(const VectorXd& q, const VectorXd& v) co
 }
 
 void ImplicitStepCore::CalcResidual(const VectorXd& q, const VectorXd& v, const VectorXd& a,
+                                    const VectorXd& multipliers, double constraint_scale,
                                     VectorXd* r) {
   CalcForces(q, v);
   residual_full_.noalias() = mass_ * a;
   residual_full_ += ws_.internal_force - ws_.external_force;
-  dofs_.Restrict(residual_full_, r);
+  if (constraints_.empty()) {
+    dofs_.Restrict(residual_full_, r);
+    return;
+  }
+  constraints_.Evaluate(q, v, ws_.body_rotation);
+  constraints_.AddReaction(multipliers, &residual_full_);
+  dofs_.Restrict(residual_full_, &residual_free_);
+  r->resize(dofs_.num_unknowns() + constraints_.size());
+  *r << residual_free_, constraints_.violation() / constraint_scale;
 }
 
 const SparseMatrixd& ImplicitStepCore::CalcIterationMatrix(const VectorXd& q, const VectorXd& v,
+                                                           const VectorXd& multipliers,
                                                            const IterationWeights& weights) {
   AssembleIterationMatrix(model_, q, v, weights, 1.0, ws_, &iteration_matrix_);
   damping_.AddRayleighJacobian(weights.damping, &iteration_matrix_);
@@ -97,7 +110,19 @@ const SparseMatrixd& ImplicitStepCore::CalcIterationMatrix(const VectorXd& q, co
     contact_.AddJacobian(q, v, previous_.contact_history, weights, &iteration_matrix_);
   if (!self_contact_.empty()) self_contact_.AddJacobian(q, v, weights, &iteration_matrix_);
   // The forces it leaves in ws_ are not used: Newton takes them from CalcResidual.
-  return iteration_matrix_.matrix();
+  if (constraints_.empty()) return iteration_matrix_.matrix();
+  // Scaled index-3 form (Bottasso, Bauchau & Cardona 2007; Arnold & Brüls 2007): the
+  // rows g/c_K have the derivative G with respect to the unknown, the columns Gᵀ act on λ.
+  constraints_.Evaluate(q, v, ws_.body_rotation);
+  constraints_.AddGeometricStiffness(multipliers, weights.stiffness, &iteration_matrix_);
+  constraints_.AssembleBorderedMatrix(iteration_matrix_.matrix(), dofs_, &bordered_);
+  return bordered_;
+}
+
+double ImplicitStepCore::ConstraintViolation(const VectorXd& q, const VectorXd& v) {
+  if (constraints_.empty()) return 0.0;
+  constraints_.Evaluate(q, v, ws_.body_rotation);
+  return constraints_.MaxViolation();
 }
 
 void ImplicitStepCore::CalcForces(const VectorXd& q, const VectorXd& v) {
@@ -127,6 +152,11 @@ void ImplicitStepCore::CalcDriveForce(const State& state) {
   const std::vector<Index>& prescribed = dofs_.prescribed_coordinates();
   if (prescribed.empty()) return;
   residual_full_.noalias() = mass_ * state.a;
+  if (!constraints_.empty()) {
+    // The joints' reactions on the driven coordinates are part of what the drive supplies.
+    constraints_.Evaluate(state.q, state.v, ws_.body_rotation);
+    constraints_.AddReaction(state.multipliers, &residual_full_);
+  }
   for (Index i : prescribed)
     ws_.drive_force[i] = residual_full_[i] + ws_.internal_force[i] - ws_.external_force[i];
 }
@@ -147,8 +177,12 @@ double ImplicitStepCore::EnergyScale(const VectorXd& q, const VectorXd& v) const
 }
 
 double ImplicitStepCore::IncrementNorm(const VectorXd& da, const VectorXd& q, double scale) const {
-  return WeightedRmsNorm(da, q, dofs_.coordinates(), scale, newton_settings_.relative_tolerance,
-                         newton_settings_.absolute_tolerance);
+  const double rtol = newton_settings_.relative_tolerance;
+  const double atol = newton_settings_.absolute_tolerance;
+  if (constraints_.empty()) return WeightedRmsNorm(da, q, dofs_.coordinates(), scale, rtol, atol);
+  return std::max(
+      WeightedRmsNorm(da.head(dofs_.num_unknowns()), q, dofs_.coordinates(), scale, rtol, atol),
+      constraints_.ScaledViolation(rtol, atol));
 }
 
 }  // namespace ancfnet

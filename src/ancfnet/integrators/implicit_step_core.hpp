@@ -4,6 +4,7 @@
 /// the state at t_n while a step is attempted. Each integrator keeps only its own update formulas.
 
 #include "ancfnet/forces/forces.hpp"
+#include "ancfnet/forces/joint_constraints.hpp"
 #include "ancfnet/forces/self_contact.hpp"
 #include "ancfnet/forces/target_contact.hpp"
 #include "ancfnet/solvers/analysis_settings.hpp"
@@ -45,15 +46,28 @@ class ImplicitStepCore {
     return newton_.Solve(problem);
   }
 
+  /// Number of constraint equations of the ideal joints (multipliers after the unknowns).
+  Index num_constraints() const { return constraints_.size(); }
   /// r = (M a + Q_int(q, v) − Q_ext(q)) restricted to the unknowns; the forces stay in ws().
-  void CalcResidual(const VectorXd& q, const VectorXd& v, const VectorXd& a, VectorXd* r);
+  /// With ideal joints, r = (M a + Q_int − Q_ext + Gᵀλ, g/c_K) over the unknowns and the
+  /// multipliers λ: the constraint rows scaled by 1/c_K, c_K = ∂q/∂x the stiffness weight of
+  /// the iteration matrix, so that they enter it as G (docs/theory.md, "Ideal joints").
+  void CalcResidual(const VectorXd& q, const VectorXd& v, const VectorXd& a,
+                    const VectorXd& multipliers, double constraint_scale, VectorXd* r);
   /// c_M M + c_C C + c_K K at (q, v) over the unknowns (C with Rayleigh damping; the dense modal
-  /// damping matrix is left out).
+  /// damping matrix is left out). With ideal joints the bordered
+  /// [c_M M + c_C C + c_K (K + ∂(Gᵀλ)/∂q)  Gᵀ; G  0] over the unknowns and λ.
   const SparseMatrixd& CalcIterationMatrix(const VectorXd& q, const VectorXd& v,
+                                           const VectorXd& multipliers,
                                            const IterationWeights& weights);
+  /// max_i |g_i| of the ideal joints at (q, v) (0 without joints).
+  double ConstraintViolation(const VectorXd& q, const VectorXd& v);
   /// Forces at (q, v) into ws(), damping models included.
   void CalcForces(const VectorXd& q, const VectorXd& v);
-  /// Weighted RMS norm of the position change scale · Δa against positions q.
+  /// Weighted RMS norm of the position change scale · Δa against positions q (the first
+  /// num_unknowns entries of Δa); with ideal joints at least the scaled violation of the last
+  /// CalcResidual (JointConstraints::ScaledViolation), so that Newton converges only where the
+  /// constraints hold to its tolerances.
   double IncrementNorm(const VectorXd& da, const VectorXd& q, double scale) const;
   /// The energy a step from the saved state to (q, v) exchanges, the scale of Newton's energy
   /// test (NewtonSettings): ½ vᵀ M v + |Δqᵀ Q_int| + |Δqᵀ Q_ext| with Δq = q − q_n and the
@@ -76,6 +90,9 @@ class ImplicitStepCore {
   Workspace ws_;
   DofMap dofs_;
   SystemMatrix iteration_matrix_;
+  JointConstraints constraints_;
+  SparseMatrixd bordered_;  // with ideal joints: the bordered iteration matrix
+  VectorXd residual_free_;
   SparseMatrixd mass_;  // all coordinates
   NewtonSolver newton_;
   NewtonSettings newton_settings_;

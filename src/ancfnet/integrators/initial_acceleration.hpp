@@ -11,7 +11,9 @@ namespace ancfnet {
 
 /// Sets state->a to a₀ = M⁻¹ (Q_ext − Q_int)(q₀, v₀) on the free coordinates of `dofs` (0 on the
 /// fixed ones), Q_int with the model's damping forces, the forces left in `ws`. Returns false
-/// when the mass matrix is singular.
+/// when the mass matrix is singular. With ideal joints (forces/joint_constraints.hpp) it first
+/// projects the free velocities onto G v = 0 in the metric of M, then solves the bordered
+/// system for a₀ and the multipliers λ₀ (state->multipliers), with G a₀ = −Ġv.
 bool CalcInitialAcceleration(const Model& model, const DofMap& dofs, const DampingModel& damping,
                              Workspace& ws, State* state);
 

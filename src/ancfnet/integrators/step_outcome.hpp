@@ -11,6 +11,8 @@ struct StepOutcome {
   int jacobian_updates = 0;
   int pattern_rebuilds = 0;  ///< of the iteration matrix, for contact couplings that came or went
   std::string failure;       ///< why the step was rejected
+  /// max_i |g_i| of the ideal joints at the accepted state (0 without joints).
+  double constraint_violation = 0.0;
 };
 
 }  // namespace ancfnet

@@ -1,37 +1,9 @@
 #include "ancfnet/io/clearance_joint_reader.hpp"
 
 #include "ancfnet/io/contact_reader.hpp"
+#include "ancfnet/io/joint_anchor_reader.hpp"
 
 namespace ancfnet {
-namespace {
-
-JointAnchorSpec ReadAnchor(const YamlValue& value,
-                           const std::function<CablePointRef(const YamlValue&)>& read_point) {
-  JointAnchorSpec spec;
-  if (value.IsScalar() && value.AsString() == "ground") return spec;  // the ground
-  if (value.IsMap()) {
-    const YamlMap map = value.AsMap();
-    if (map.Find("ground")) {
-      map.CheckKeys({"ground"});
-      spec.position = map.Get("ground").AsVector3();
-      return spec;
-    }
-    if (map.Find("body")) {
-      map.CheckKeys({"body", "point"});
-      spec.kind = JointAnchor::Kind::kBody;
-      spec.name = map.Get("body").AsString();
-      if (auto v = map.Find("point")) spec.position = v->AsVector3();
-      return spec;
-    }
-  }
-  const CablePointRef point = read_point(value);
-  spec.kind = JointAnchor::Kind::kPoint;
-  spec.name = point.cable;
-  spec.s = point.s;
-  return spec;
-}
-
-}  // namespace
 
 void ReadClearanceJoint(const YamlValue& item,
                         const std::function<CablePointRef(const YamlValue&)>& read_point,
@@ -52,8 +24,8 @@ void ReadClearanceJoint(const YamlValue& item,
   }
   const YamlValue journal = map.Get("journal");
   const YamlValue bearing = map.Get("bearing");
-  spec.journal = ReadAnchor(journal, read_point);
-  spec.bearing = ReadAnchor(bearing, read_point);
+  spec.journal = ReadJointAnchor(journal, read_point);
+  spec.bearing = ReadJointAnchor(bearing, read_point);
   spec.clearance = map.Get("clearance").AsPositive();
   const YamlValue radius = map.Get("journal_radius");
   spec.journal_radius = radius.AsPositive();

@@ -3,10 +3,9 @@
 ///   {name, type: revolute_clearance | spherical_clearance, journal: ANCHOR, bearing: ANCHOR,
 ///    clearance, journal_radius, axis (revolute; default [0, 0, 1]), contact: LAW,
 ///    friction: FRICTION}
-/// ANCHOR: `ground` (concentric with the other side at t = 0) or {ground: [x, y, z]};
-/// {body: NAME, point: [x, y, z]} (the centre at t = 0 in world coordinates; default the body's
-/// centre of mass); or a point as elsewhere in a scene (CABLE.start, CABLE.end,
-/// {cable: NAME, s: FRACTION}, a point mass). LAW and FRICTION as under `contact` (law,
+/// ANCHOR (io/joint_anchor_reader.hpp): `ground` (concentric with the other side at t = 0) or
+/// {ground: [x, y, z]}; {body: NAME, point: [x, y, z]} (the centre at t = 0 in world
+/// coordinates; default the body's centre of mass); or a cable point or point mass. LAW and FRICTION as under `contact` (law,
 /// friction; io/contact_reader.hpp), friction tanh or ambrosio.
 
 #include <functional>

@@ -14,6 +14,7 @@
 
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/io/clearance_joint_reader.hpp"
+#include "ancfnet/io/ideal_joint_reader.hpp"
 #include "ancfnet/io/closest_name.hpp"
 #include "ancfnet/io/connection_law_reader.hpp"
 #include "ancfnet/io/contact_reader.hpp"
@@ -288,7 +289,8 @@ std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
                                     {"body_pose", ProbeQuantity::kBodyPose},
                                     {"body_velocity", ProbeQuantity::kBodyVelocity},
                                     {"contact", ProbeQuantity::kContact},
-                                    {"clearance_joint", ProbeQuantity::kClearanceJoint}});
+                                    {"clearance_joint", ProbeQuantity::kClearanceJoint},
+                                    {"joint_reaction", ProbeQuantity::kJointReaction}});
     const bool whole_system = probe.quantity == ProbeQuantity::kEnergy;
     const bool of_a_point =
         probe.quantity == ProbeQuantity::kPosition || probe.quantity == ProbeQuantity::kVelocity;
@@ -298,7 +300,8 @@ std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
     const bool of_a_body = probe.quantity == ProbeQuantity::kBodyPose ||
                            probe.quantity == ProbeQuantity::kBodyVelocity;
     const bool of_contacts = probe.quantity == ProbeQuantity::kContact;
-    const bool of_a_joint = probe.quantity == ProbeQuantity::kClearanceJoint;
+    const bool of_a_joint = probe.quantity == ProbeQuantity::kClearanceJoint ||
+                            probe.quantity == ProbeQuantity::kJointReaction;
     if (of_a_body)
       map.CheckKeys({"name", "quantity", "body"});
     else if (of_a_point)
@@ -329,9 +332,11 @@ std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
       if (auto target = map.Find("target"))
         probe.target =
             ReadNamedIndex(*target, model.contact().targets, "contact target", "targets");
-    } else if (of_a_joint) {
+    } else if (probe.quantity == ProbeQuantity::kClearanceJoint) {
       probe.joint =
           ReadNamedIndex(map.Get("joint"), model.clearance_joints(), "clearance joint", "joints");
+    } else if (of_a_joint) {
+      probe.joint = ReadNamedIndex(map.Get("joint"), model.ideal_joints(), "ideal joint", "joints");
     } else if (!whole_system) {
       probe.net = ReadNamedIndex(map.Get("net"), model.nets(), "net", "nets");
       probe.reference = CalcNetCentroid(model, model.nets()[probe.net], model.initial_positions());
@@ -362,9 +367,10 @@ Scene ReadScene(const YamlValue& root, const std::filesystem::path& scene_direct
     for (const YamlValue& item : v->AsList()) ReadPointMass(item, &builder, &point_masses);
   if (auto v = scene.Find("nets"))
     for (const YamlValue& item : v->AsList()) ReadNet(item, library, &builder, &point_masses);
-  // Cables are required unless the scene has point masses (or nets).
-  if (auto v = scene.Find("cables"); v || point_masses.empty())
-    for (const YamlValue& item : scene.Get("cables").AsList(/*non_empty=*/point_masses.empty()))
+  // Cables are required unless the scene has point masses (or nets) or rigid bodies.
+  const bool cables_required = point_masses.empty() && !scene.Find("bodies");
+  if (auto v = scene.Find("cables"); v || cables_required)
+    for (const YamlValue& item : scene.Get("cables").AsList(/*non_empty=*/cables_required))
       ReadCable(item, library, &builder);
   if (auto v = scene.Find("bodies"))
     for (const YamlValue& item : v->AsList()) ReadRigidBody(item, &builder);
@@ -377,9 +383,18 @@ Scene ReadScene(const YamlValue& root, const std::filesystem::path& scene_direct
           item, [&](const YamlValue& point) { return ReadPoint(point, point_masses); },
           result.analysis.dynamics.time_step, &builder);
   if (auto v = scene.Find("joints"))
-    for (const YamlValue& item : v->AsList())
-      ReadClearanceJoint(
-          item, [&](const YamlValue& point) { return ReadPoint(point, point_masses); }, &builder);
+    for (const YamlValue& item : v->AsList()) {
+      const auto read_point = [&](const YamlValue& point) { return ReadPoint(point, point_masses); };
+      const auto type = item.IsMap() ? item.AsMap().Find("type") : std::nullopt;
+      // One list of the types for the message of a misspelt one.
+      if (type)
+        type->AsChoice({"spherical", "revolute", "weld", "line", "prismatic",
+                        "revolute_clearance", "spherical_clearance"});
+      if (type && IsIdealJointType(type->AsString()))
+        ReadIdealJoint(item, read_point, &builder);
+      else
+        ReadClearanceJoint(item, read_point, &builder);
+    }
   if (auto v = scene.Find("spring_dampers")) {
     UniqueNames names("spring-dampers");
     for (const YamlValue& item : v->AsList()) ReadSpringDamper(item, point_masses, &names, &builder);

@@ -94,6 +94,10 @@ Json ProbeJson(const Probe& probe, const Model& model, const State& state,
                 {"friction_force", Number(values[5])},
                 {"friction_moment", Number(values[6])},
                 {"mode", static_cast<int>(values[7])}}}};
+    case ProbeQuantity::kJointReaction:
+      return {{"joint_reaction",
+               {{"force", {Number(values[0]), Number(values[1]), Number(values[2])}},
+                {"moment", {Number(values[3]), Number(values[4]), Number(values[5])}}}}};
   }
   return Json::object();
 }
@@ -119,6 +123,7 @@ void WriteSummaryJson(const std::filesystem::path& path, const RunSummary& summa
       {"step_cuts", summary.step_cuts},
       {"step_cut_reasons", summary.step_cut_reasons},
       {"pattern_rebuilds", summary.pattern_rebuilds},
+      {"max_constraint_violation", Number(summary.max_constraint_violation)},
       {"wall_time_s", Number(summary.wall_time_s)},
       {"output_time_s", Number(summary.output_time_s)},
       {"energy", EnergyJson(summary.energy)},

@@ -27,6 +27,9 @@ struct RunSummary {
   long step_cuts = 0;
   long pattern_rebuilds = 0;           ///< new patterns of the iteration matrix (contact)
   std::map<std::string, long> step_cut_reasons;  ///< rejected attempts by reason
+  /// Largest violation max_i |g_i| of the ideal joints over the run (m, or 1 for direction
+  /// equations); 0 without joints.
+  double max_constraint_violation = 0.0;
   long outputs = 0;                    ///< output steps written (rows of probes.csv)
   double wall_time_s = 0.0;            ///< whole analysis, outputs included (s)
   double output_time_s = 0.0;          ///< part of it spent writing probes.csv and VTK frames (s)
@@ -36,8 +39,9 @@ struct RunSummary {
 
 /// Writes `summary` and the final values of `probes` (EvaluateProbe on `state` with
 /// summary.energy and `contacts`, the active contacts at `state`) to `path` as JSON, indented by 2:
-/// `{"status": "completed"|"failed"|"interrupted", "message", "analysis", "time", "steps", "newton_iterations",
-/// "jacobian_updates", "step_cuts", "step_cut_reasons": {REASON: count}, "pattern_rebuilds", "wall_time_s", "output_time_s", "energy":
+/// `{"status": "completed"|"failed"|"interrupted", "message", "analysis", "time", "steps",
+/// "newton_iterations", "jacobian_updates", "step_cuts", "step_cut_reasons": {REASON: count},
+/// "pattern_rebuilds", "max_constraint_violation", "wall_time_s", "output_time_s", "energy":
 /// {"kinetic", "strain", "gravity", "work", "dissipated", "balance"}, "failures": [{"time", "what",
 /// "tension"}], "probes": {NAME: {"position": [x, y, z]} |
 /// {"velocity": [vx, vy, vz]} | {"energy": {"kinetic", …}} | {"contact": {"active",

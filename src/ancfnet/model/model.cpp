@@ -17,6 +17,12 @@ double Model::total_mass() const {
   return mass;
 }
 
+Index Model::num_constraint_equations() const {
+  Index n = 0;
+  for (const IdealJoint& joint : ideal_joints_) n += joint.num_equations();
+  return n;
+}
+
 bool Model::has_free_bodies() const {
   for (const RigidBody& body : rigid_bodies_)
     if (body.motion == BodyMotion::kFree) return true;

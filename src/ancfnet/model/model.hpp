@@ -15,6 +15,7 @@
 #include "ancfnet/elements/connection_law.hpp"
 #include "ancfnet/model/clearance_joint.hpp"
 #include "ancfnet/model/damping_spec.hpp"
+#include "ancfnet/model/ideal_joint.hpp"
 #include "ancfnet/model/material.hpp"
 #include "ancfnet/model/prescribed_motion.hpp"
 #include "ancfnet/model/rigid_body.hpp"
@@ -147,6 +148,10 @@ class Model {
   const std::vector<BodyAttachment>& body_attachments() const { return body_attachments_; }
   /// Revolute and spherical clearance joints (model/clearance_joint.hpp).
   const std::vector<ClearanceJoint>& clearance_joints() const { return clearance_joints_; }
+  /// Ideal joints: constraints with Lagrange multipliers (model/ideal_joint.hpp).
+  const std::vector<IdealJoint>& ideal_joints() const { return ideal_joints_; }
+  /// Number of constraint equations of the ideal joints (Lagrange multipliers).
+  Index num_constraint_equations() const;
   /// True when a rigid body moves freely (static and modal analyses refuse such models).
   bool has_free_bodies() const;
   const std::vector<CableElement>& elements() const { return elements_; }
@@ -212,6 +217,7 @@ class Model {
   std::vector<RigidBody> rigid_bodies_;
   std::vector<BodyAttachment> body_attachments_;
   std::vector<ClearanceJoint> clearance_joints_;
+  std::vector<IdealJoint> ideal_joints_;
   std::vector<PointForce> point_forces_;
   std::vector<PointMoment> point_moments_;
   std::vector<DistributedLoad> distributed_loads_;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "ancfnet/model/clearance_joint_spec.hpp"
+#include "ancfnet/model/ideal_joint_spec.hpp"
 #include "ancfnet/model/model.hpp"
 
 namespace ancfnet {
@@ -111,6 +112,13 @@ class ModelBuilder {
   /// name, 0 < c < R_J, a non-zero axis, a valid law and a regularised friction law, anchors that
   /// name existing bodies, point masses or cable points, not both the ground. Bodies first.
   void AddClearanceJoint(const ClearanceJointSpec& spec);
+  /// Adds an ideal joint (model/ideal_joint_spec.hpp): a name unique among all joints, sides
+  /// that name existing bodies, point masses or cable points, not both the ground; revolute and
+  /// prismatic: each side the ground or a body (a revolute's first side may be a cable point, its
+  /// axis along the cable's tangent); weld: the first a cable point, the second the ground or a
+  /// body; a non-zero axis; the two sides' points within 1e-9 m (relative to the model's size)
+  /// of each other at t = 0. Bodies first.
+  void AddIdealJoint(const IdealJointSpec& spec);
   /// Fixes position and slope of the node at `at` (which must be a node).
   void AddClamp(const CablePointRef& at);
   /// Fixes the position of the node at `at`; the slope stays free.
@@ -140,6 +148,8 @@ class ModelBuilder {
  private:
   Index LocateNode(const CablePointRef& at) const;
   void CheckNameIsFree(const std::string& name) const;
+  // Throws InputError when a clearance or ideal joint is already named `name`.
+  void CheckJointNameIsFree(const std::string& name) const;
   // The mass that moves with a located point: a point mass's, or half its cable element's.
   double PointMassOf(const CablePointRef& point) const;
   // Appends n coordinates with these initial values, free and at rest; returns the first.

@@ -123,6 +123,7 @@ RunSummary RunScene(const Scene& scene, const RunOptions& options) {
   summary.jacobian_updates = result.statistics.jacobian_updates;
   summary.step_cuts = result.statistics.step_cuts;
   summary.pattern_rebuilds = result.statistics.pattern_rebuilds;
+  summary.max_constraint_violation = result.statistics.max_constraint_violation;
   summary.step_cut_reasons = result.statistics.step_cut_reasons;
   summary.outputs = outputs;
   summary.wall_time_s = progress.elapsed_s();

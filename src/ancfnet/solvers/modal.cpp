@@ -8,40 +8,60 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/forces/forces.hpp"
+#include "ancfnet/forces/joint_constraints.hpp"
 #include "ancfnet/solvers/damping_model.hpp"
 #include "ancfnet/solvers/linear_solver.hpp"
 
 namespace ancfnet {
 namespace {
 
-// y = (K − σ M)⁻¹ x with one sparse factorisation per shift (KLU), for Spectra.
+// Sparse, symmetrised matrices over the unknowns, and the ideal joints' constraints (none
+// when the model has no ideal joints).
+struct LinearSystem {
+  SparseMatrixd stiffness, damping, mass;
+  std::optional<JointConstraints> constraints;
+};
+
+// y = (K − σ M)⁻¹ x with one sparse factorisation per shift (KLU), for Spectra. With ideal
+// joints y solves the bordered system [K − σM  Gᵀ; G  0] (y, μ) = (x, 0): y lies in the null
+// space of G, and (K − σM)⁻¹ M becomes the shift-invert operator of the pencil (K, M)
+// restricted to the motions the joints allow (Géradin & Cardona 2001). It is self-adjoint in
+// the M inner product, so Lanczos applies; its m zero eigenvalues (ω² = ∞) are never among the
+// largest.
 class ShiftInvertOperator {
  public:
   using Scalar = double;
-  ShiftInvertOperator(const SparseMatrixd& k, const SparseMatrixd& m) : k_(k), m_(m) {}
-  Eigen::Index rows() const { return k_.rows(); }
-  Eigen::Index cols() const { return k_.cols(); }
+  ShiftInvertOperator(LinearSystem& system, const DofMap& dofs) : system_(system), dofs_(dofs) {}
+  Eigen::Index rows() const { return system_.stiffness.rows(); }
+  Eigen::Index cols() const { return system_.stiffness.cols(); }
   void set_shift(double sigma) {
-    shifted_ = k_ - sigma * m_;
-    if (!solver_.Factorize(shifted_))
+    shifted_ = system_.stiffness - sigma * system_.mass;
+    const SparseMatrixd* a = &shifted_;
+    if (system_.constraints) {
+      system_.constraints->AssembleBorderedMatrix(shifted_, dofs_, &bordered_);
+      a = &bordered_;
+    }
+    if (!solver_.Factorize(*a))
       throw SolverError(
           fmt::format("K − σM is singular at σ = {:.6g}: choose another shift", sigma), 0.0);
-    x_.resize(k_.rows());
-    y_.resize(k_.rows());
+    x_ = VectorXd::Zero(a->rows());
+    y_.resize(a->rows());
   }
   void perform_op(const double* x_in, double* y_out) const {
-    x_ = Eigen::Map<const VectorXd>(x_in, k_.rows());
+    x_.head(rows()) = Eigen::Map<const VectorXd>(x_in, rows());
     solver_.Solve(x_, &y_);
-    Eigen::Map<VectorXd>(y_out, k_.rows()) = y_;
+    Eigen::Map<VectorXd>(y_out, rows()) = y_.head(rows());
   }
 
  private:
-  const SparseMatrixd& k_;
-  const SparseMatrixd& m_;
+  LinearSystem& system_;
+  const DofMap& dofs_;
   SparseMatrixd shifted_;
+  SparseMatrixd bordered_;
   mutable SparseLinearSolver solver_;
   mutable VectorXd x_, y_;
 };
@@ -52,11 +72,11 @@ struct Eigenpairs {
   MatrixXd vectors;  // over the unknowns, M-normalised
 };
 
-Eigenpairs SolveShiftInvert(const SparseMatrixd& k, const SparseMatrixd& m, int num_modes,
-                            double sigma, double tolerance, int subspace_factor = 1) {
-  ShiftInvertOperator op(k, m);
-  Spectra::SparseSymMatProd<double> m_op(m);
-  const Eigen::Index n = k.rows();
+Eigenpairs SolveShiftInvert(LinearSystem& system, const DofMap& dofs, int num_modes, double sigma,
+                            double tolerance, int subspace_factor = 1) {
+  ShiftInvertOperator op(system, dofs);
+  Spectra::SparseSymMatProd<double> m_op(system.mass);
+  const Eigen::Index n = system.stiffness.rows();
   const Eigen::Index ncv =
       std::min<Eigen::Index>(n, subspace_factor * std::max(2 * num_modes + 1, 20));
   Spectra::SymGEigsShiftSolver<ShiftInvertOperator, Spectra::SparseSymMatProd<double>,
@@ -71,11 +91,6 @@ Eigenpairs SolveShiftInvert(const SparseMatrixd& k, const SparseMatrixd& m, int 
   result.vectors = solver.eigenvectors();
   return result;
 }
-
-// Sparse, symmetrised matrices over the unknowns.
-struct LinearSystem {
-  SparseMatrixd stiffness, damping, mass;
-};
 
 LinearSystem Linearise(const Model& model, const DofMap& dofs, const VectorXd& q,
                        const DampingModel* damping) {
@@ -101,6 +116,14 @@ LinearSystem Linearise(const Model& model, const DofMap& dofs, const VectorXd& q
   system.damping = matrix.matrix();
   AssembleMassMatrix(model, ws, &matrix);
   system.mass = matrix.matrix();
+  if (model.num_constraint_equations() > 0) {
+    // The joints' Hessian λ ∂²g/∂q² would add to K; it vanishes here: g is linear in the
+    // coordinates of cable points and point masses, and every body is fixed or prescribed (free
+    // bodies are refused above), so the nonlinear terms, all in body rotations, act on no
+    // unknown. G alone restricts the modes.
+    system.constraints.emplace(model);
+    system.constraints->Evaluate(q, rest, MakeInitialState(model).body_rotation);
+  }
   return system;
 }
 
@@ -138,12 +161,16 @@ VectorXd CalcDampingRatios(const MatrixXd& c, const VectorXd& omega,
   return zeta;
 }
 
-UndampedModes SolveUndamped(const Model& model, const DofMap& dofs, const LinearSystem& system,
+UndampedModes SolveUndamped(const Model& model, const DofMap& dofs, LinearSystem& system,
                             const ModalSettings& settings) {
   const Index n = dofs.num_unknowns();
-  if (settings.num_modes < 1 || settings.num_modes >= n)
-    throw InputError(fmt::format("modes: asked for {} of a model with {} unknowns (1 … {})",
-                                 settings.num_modes, n, n - 1));
+  // The joints take one degree of freedom per constraint equation.
+  const Index m = system.constraints ? system.constraints->size() : 0;
+  if (settings.num_modes < 1 || settings.num_modes >= n - m)
+    throw InputError(fmt::format("modes: asked for {} of a model with {} unknowns{} (1 … {})",
+                                 settings.num_modes, n,
+                                 m > 0 ? fmt::format(" and {} joint constraints", m) : "",
+                                 n - m - 1));
   const double scale = system.stiffness.diagonal().cwiseAbs().maxCoeff() /
                        system.mass.diagonal().cwiseAbs().maxCoeff();
   double sigma = settings.shift;
@@ -151,7 +178,7 @@ UndampedModes SolveUndamped(const Model& model, const DofMap& dofs, const Linear
     // A first pass with a shift far below any elastic eigenvalue of the model finds the lowest
     // one; the real solve then shifts to just below it, where Lanczos converges fast.
     const Eigenpairs probe =
-        SolveShiftInvert(system.stiffness, system.mass, 1, -1e-12 * scale, settings.tolerance);
+        SolveShiftInvert(system, dofs, 1, -1e-12 * scale, settings.tolerance);
     const double lowest = probe.converged ? std::max(probe.values[0], 0.0) : 0.0;
     sigma = lowest > 1e-10 * scale ? -0.5 * lowest : -1e-6 * scale;
   }
@@ -161,8 +188,8 @@ UndampedModes SolveUndamped(const Model& model, const DofMap& dofs, const Linear
   Eigenpairs pairs;
   for (const auto& [factor, move] : {std::pair{1, 1.0}, {3, 1.0}, {3, 1e-4}, {3, 1e-8}}) {
     if (settings.shift != 0.0 && move != 1.0) break;  // the user's shift stays
-    pairs = SolveShiftInvert(system.stiffness, system.mass, settings.num_modes, sigma * move,
-                             settings.tolerance, factor);
+    pairs = SolveShiftInvert(system, dofs, settings.num_modes, sigma * move, settings.tolerance,
+                             factor);
     if (pairs.converged) break;
   }
   UndampedModes modes;
@@ -187,14 +214,14 @@ UndampedModes SolveUndamped(const Model& model, const DofMap& dofs, const Linear
 UndampedModes CalcUndampedModes(const Model& model, const VectorXd& q,
                                 const ModalSettings& settings) {
   const DofMap dofs = DofMap::FreeCoordinates(model);
-  const LinearSystem system = Linearise(model, dofs, q, nullptr);
+  LinearSystem system = Linearise(model, dofs, q, nullptr);
   return SolveUndamped(model, dofs, system, settings);
 }
 
 ModalResult CalcModes(const Model& model, const VectorXd& q, const ModalSettings& settings) {
   const DofMap dofs = DofMap::FreeCoordinates(model);
   const DampingModel damping(model);
-  const LinearSystem system = Linearise(model, dofs, q, &damping);
+  LinearSystem system = Linearise(model, dofs, q, &damping);
   const UndampedModes undamped = SolveUndamped(model, dofs, system, settings);
   ModalResult result;
   result.message = undamped.message;

@@ -40,7 +40,7 @@ std::string StepCutReason(const std::string& failure) {
   return std::regex_replace(failure, kNumber, "#");
 }
 
-double WeightedRmsNorm(const VectorXd& dx, const VectorXd& x, const std::vector<Index>& coordinates,
+double WeightedRmsNorm(const Eigen::Ref<const VectorXd>& dx, const VectorXd& x, const std::vector<Index>& coordinates,
                        double scale, double rtol, double atol) {
   if (dx.size() == 0) return 0.0;
   double sum = 0.0;

@@ -19,6 +19,9 @@ struct SolveStatistics {
   long pattern_rebuilds = 0;   ///< new patterns of the iteration matrix (contact couplings)
   /// Rejected attempts by reason (StepCutReason of the failure), so a user sees what cuts the step.
   std::map<std::string, long> step_cut_reasons;
+  /// The largest violation max_i |g_i| of the ideal joints' constraints at an accepted step or
+  /// increment (m for position equations, 1 for direction and slope equations); 0 without joints.
+  double max_constraint_violation = 0.0;
 };
 
 struct SolveResult {
@@ -53,7 +56,7 @@ std::string StepCutReason(const std::string& failure);
 
 /// Weighted RMS norm √(mean_i (dx_i / (atol + rtol |x_i|))²) over the unknowns (Hairer &
 /// Wanner 1996, II.4); `coordinates` maps unknown i to its entry of x.
-double WeightedRmsNorm(const VectorXd& dx, const VectorXd& x, const std::vector<Index>& coordinates,
+double WeightedRmsNorm(const Eigen::Ref<const VectorXd>& dx, const VectorXd& x, const std::vector<Index>& coordinates,
                        double scale, double rtol, double atol);
 
 }  // namespace ancfnet

@@ -2,17 +2,22 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "ancfnet/analysis/energy_tracker.hpp"
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/forces/forces.hpp"
+#include "ancfnet/forces/joint_constraints.hpp"
 #include "ancfnet/solvers/newton.hpp"
 
 namespace ancfnet {
 namespace {
 
-// One load increment as a Newton problem: R(q) = Q_int(q) − λ Q_ext(q) over the unknowns.
+// One load increment as a Newton problem: R(q) = Q_int(q) − λ Q_ext(q) over the unknowns. With
+// ideal joints the unknowns are (q, μ), μ the joints' multipliers, and the problem is bordered
+// (Géradin & Cardona 2001):
+//   R = (Q_int − λ Q_ext + Gᵀ μ, g),   ∂R/∂(q, μ) = [K + ∂(Gᵀμ)/∂q  Gᵀ; G  0].
 class LoadIncrement {
  public:
   LoadIncrement(const Model& model, const NewtonSettings& newton, Workspace& ws, State& state)
@@ -22,33 +27,66 @@ class LoadIncrement {
         state_(state),
         dofs_(DofMap::FreeCoordinates(model)),
         matrix_(model, dofs_),
+        constraints_(model),
         q_start_(state.q),
+        multipliers_start_(state.multipliers),
         residual_full_(state.q.size()) {}
 
   void Begin(double load_factor) {
     load_factor_ = load_factor;
     q_start_ = state_.q;
+    multipliers_start_ = state_.multipliers;
   }
-  Index size() const { return dofs_.num_unknowns(); }
-  void Reset() { state_.q = q_start_; }
+  Index size() const { return dofs_.num_unknowns() + constraints_.size(); }
+  void Reset() {
+    state_.q = q_start_;
+    state_.multipliers = multipliers_start_;
+  }
   void CalcResidual(VectorXd* r) {
     CalcInternalForces(model_, state_.q, state_.v, ws_);
     CalcExternalForces(model_, state_.q, load_factor_, ws_);
     residual_full_ = ws_.internal_force - ws_.external_force;
-    dofs_.Restrict(residual_full_, r);
+    if (constraints_.empty()) {
+      dofs_.Restrict(residual_full_, r);
+      return;
+    }
+    constraints_.Evaluate(state_.q, state_.v, state_.body_rotation);
+    constraints_.AddReaction(state_.multipliers, &residual_full_);
+    dofs_.Restrict(residual_full_, &residual_free_);
+    r->resize(size());
+    *r << residual_free_, constraints_.violation();
   }
   const SparseMatrixd& CalcIterationMatrix() {
     AssembleIterationMatrix(model_, state_.q, state_.v, {.stiffness = 1.0}, load_factor_, ws_,
                             &matrix_);
-    return matrix_.matrix();
+    if (constraints_.empty()) return matrix_.matrix();
+    constraints_.Evaluate(state_.q, state_.v, state_.body_rotation);
+    constraints_.AddGeometricStiffness(state_.multipliers, 1.0, &matrix_);
+    constraints_.AssembleBorderedMatrix(matrix_.matrix(), dofs_, &bordered_);
+    return bordered_;
   }
-  void ApplyIncrement(const VectorXd& dx, double scale) { dofs_.AddExpanded(dx, scale, &state_.q); }
+  void ApplyIncrement(const VectorXd& dx, double scale) {
+    dofs_.AddExpanded(dx, scale, &state_.q);
+    if (!constraints_.empty()) state_.multipliers += scale * dx.tail(constraints_.size());
+  }
+  // The position increment, and with joints the constraint violation at the iterate the
+  // increment was computed at: both must be within the tolerances.
   double IncrementNorm(const VectorXd& dx) const {
-    return WeightedRmsNorm(dx, state_.q, dofs_.coordinates(), 1.0, newton_.relative_tolerance,
-                           newton_.absolute_tolerance);
+    const double norm =
+        WeightedRmsNorm(dx.head(dofs_.num_unknowns()), state_.q, dofs_.coordinates(), 1.0,
+                        newton_.relative_tolerance, newton_.absolute_tolerance);
+    if (constraints_.empty()) return norm;
+    return std::max(norm, constraints_.ScaledViolation(newton_.relative_tolerance,
+                                                       newton_.absolute_tolerance));
   }
   double IncrementEnergy(const VectorXd& dx, const VectorXd& r) const {
     return std::abs(dx.dot(r));
+  }
+  // max_i |g_i| at the current state.
+  double ConstraintViolation() {
+    if (constraints_.empty()) return 0.0;
+    constraints_.Evaluate(state_.q, state_.v, state_.body_rotation);
+    return constraints_.MaxViolation();
   }
   // The work of the internal and applied forces over the increment so far (forces of the last
   // CalcResidual).
@@ -64,9 +102,13 @@ class LoadIncrement {
   State& state_;
   DofMap dofs_;
   SystemMatrix matrix_;
+  JointConstraints constraints_;
+  SparseMatrixd bordered_;
   double load_factor_ = 0.0;
   VectorXd q_start_;
+  VectorXd multipliers_start_;
   VectorXd residual_full_;
+  VectorXd residual_free_;
 };
 
 }  // namespace
@@ -121,6 +163,8 @@ SolveResult SolveStatic(const Model& model, const StaticSettings& settings,
     }
     load_factor = target;
     state->t = load_factor;
+    result.statistics.max_constraint_violation =
+        std::max(result.statistics.max_constraint_violation, increment.ConstraintViolation());
     ++result.statistics.steps;
     if (cuts_in_a_row == 0) step = std::min(2.0 * step, nominal);
     cuts_in_a_row = 0;

@@ -13,6 +13,7 @@ State MakeInitialState(const Model& model) {
   state.link_broken.assign(model.links().size(), 0);
   state.contact_history.assign(static_cast<std::size_t>(CountContactPairs(model)), {});
   state.joint_history.assign(model.clearance_joints().size(), {});
+  state.multipliers = VectorXd::Zero(model.num_constraint_equations());
   for (const RigidBody& body : model.rigid_bodies())
     state.body_rotation.push_back(body.initial_orientation);
   return state;

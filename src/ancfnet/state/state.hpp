@@ -50,6 +50,10 @@ struct State {
   /// rotation coordinates (model/rigid_body.hpp). R_WB(0) at t = 0; the integrators rebase it
   /// after every accepted step of a free body (RebaseBodyRotations).
   std::vector<Matrix3d> body_rotation;
+  /// Per constraint equation of the ideal joints (forces/joint_constraints.hpp): its Lagrange
+  /// multiplier λ, the reaction that holds it (N for a position equation, N m for a direction
+  /// equation), at the last solved state.
+  VectorXd multipliers;
 };
 
 /// The model's initial state at t = 0 (accelerations zero until an integrator computes them).

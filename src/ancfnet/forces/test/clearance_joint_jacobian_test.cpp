@@ -9,6 +9,7 @@
 
 #include "ancfnet/assembly/system_matrix.hpp"
 #include "ancfnet/forces/test/central_difference_jacobian.hpp"
+#include "ancfnet/forces/test/spinning_body.hpp"
 #include "ancfnet/forces/test/target_contact_check.hpp"
 #include "ancfnet/forces/clearance_joint_forces.hpp"
 #include "ancfnet/model/model_builder.hpp"
@@ -31,16 +32,8 @@ Vector3d JournalCenter(ClearanceJoint::Type type) {
 
 using Kind = JointAnchor::Kind;
 
-void AddSpinningBody(const std::string& name, const Vector3d& center, ModelBuilder* builder) {
-  builder->AddRigidBody(
-      {.name = name,
-       .mass = 2.0,
-       .inertia = Vector3d(0.02, 0.03, 0.04).asDiagonal(),
-       .position = center + Vector3d(0.02, -0.01, 0.03),
-       .orientation = Eigen::AngleAxisd(0.4, Vector3d(1, 2, 3).normalized()).toRotationMatrix(),
-       .velocity = Vector3d(0.05, -0.02, 0.01),
-       .angular_velocity = Vector3d(3.0, -5.0, 7.0)});
-}
+// Where a body carrying a side has its centre of mass, from that side's centre.
+const Vector3d kBodyOffset(0.02, -0.01, 0.03);
 
 // The journal and bearing of a test joint: which kinds, and the joint's type and friction.
 struct Case {
@@ -66,7 +59,7 @@ Model MakeJointModel(const Case& c, bool journal_on_point_mass) {
   // The journal: a body, a point mass or the ground.
   const Vector3d journal_center = JournalCenter(c.type);
   if (c.journal == Kind::kBody) {
-    AddSpinningBody("journal", journal_center, &builder);
+    test::AddSpinningBody("journal", journal_center + kBodyOffset, 0.4, &builder);
     spec.journal = {.kind = Kind::kBody, .name = "journal", .position = journal_center};
   } else if (c.journal == Kind::kPoint && journal_on_point_mass) {
     builder.AddPointMass("ball", 0.1, journal_center, Vector3d(0.03, -0.04, 0.02));
@@ -76,7 +69,7 @@ Model MakeJointModel(const Case& c, bool journal_on_point_mass) {
   }
   // The bearing: the rope's point at s = 0.3, or a body.
   if (c.bearing == Kind::kBody) {
-    AddSpinningBody("bearing", kBearingCenter, &builder);
+    test::AddSpinningBody("bearing", kBearingCenter + kBodyOffset, 0.4, &builder);
     spec.bearing = {.kind = Kind::kBody, .name = "bearing", .position = kBearingCenter};
   } else {
     spec.bearing = {.kind = Kind::kPoint, .name = "rope", .s = 0.3};

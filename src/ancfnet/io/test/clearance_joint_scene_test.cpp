@@ -108,8 +108,9 @@ TEST(ClearanceJointScene, BadInputNamesLineAndKey) {
       {"bearing: arm.end", "bearing: ram.end", "<string>:19:14: bearing:"},
       {"journal: ball, bearing: ground", "journal: ground, bearing: ground",
        "journal and bearing are both the ground"},
-      {"type: revolute_clearance", "type: revolute",
-       "<string>:17:11: expected one of revolute_clearance, spherical_clearance"},
+      // (`revolute` is an ideal joint: the list names both kinds.)
+      {"type: revolute_clearance", "type: revolute_clearence",
+       "<string>:17:11: expected one of spherical, revolute, "},
       {"friction: {type: tanh, kinetic: 0.1}",
        "friction: {type: lugre, kinetic: 0.1, "
        "bristle_stiffness: 1.0e4}",
