@@ -32,6 +32,16 @@ void AddPatternEntries(const std::vector<Index>& rows, const std::vector<Index>&
       if (row >= 0 && col >= 0) triplets->emplace_back(row, col, 0.0);
 }
 
+// values[slots[n j + i]] += scale · block(i, j) over a whole group of n coordinates (a slot of −1:
+// a fixed row or column, skipped).
+template <int N>
+void AddDenseBlock(const int* slots, const Eigen::Matrix<double, N, N>& block, double scale,
+                   double* values) {
+  for (int j = 0; j < N; ++j)
+    for (int i = 0; i < N; ++i)
+      if (slots[N * j + i] >= 0) values[slots[N * j + i]] += scale * block(i, j);
+}
+
 std::uint64_t PairKey(Index a, Index b) {
   return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint64_t>(b);
 }
@@ -44,7 +54,8 @@ SystemMatrix::SystemMatrix(const Model& model, const DofMap& dofs)
       num_point_masses_(static_cast<Index>(model.point_masses().size())),
       num_links_(static_cast<Index>(model.links().size())),
       num_bodies_(static_cast<Index>(model.rigid_bodies().size())),
-      num_attachments_(static_cast<Index>(model.body_attachments().size())) {
+      num_attachments_(static_cast<Index>(model.body_attachments().size())),
+      num_joints_(static_cast<Index>(model.clearance_joints().size())) {
   for (const CableElement& element : model.elements())
     group_blocks_.push_back({element.dofs[0], element.dofs[3], element.dofs[6], element.dofs[9]});
   for (const PointMass& point : model.point_masses()) group_blocks_.push_back({point.dof});
@@ -75,6 +86,11 @@ SystemMatrix::SystemMatrix(const Model& model, const DofMap& dofs)
         group.insert(group.end(), anchor->dof.begin(), anchor->dof.begin() + anchor->num_blocks);
       }
     }
+    group_blocks_.push_back(group);
+  }
+  for (const BeamElement& beam : model.beam_elements()) {
+    std::vector<Index> group;
+    for (int b = 0; b < kBeamElementBlocks; ++b) group.push_back(beam.dofs[3 * b]);
     group_blocks_.push_back(group);
   }
   Rebuild();
@@ -181,11 +197,7 @@ void SystemMatrix::SetZero() {
 }
 
 void SystemMatrix::AddElementBlock(Index element, const Matrix12d& block, double scale) {
-  double* values = matrix_.valuePtr();
-  const int* slots = slot_.data() + groups_[element].first_slot;
-  for (int j = 0; j < kCableElementDofs; ++j)
-    for (int i = 0; i < kCableElementDofs; ++i)
-      if (slots[12 * j + i] >= 0) values[slots[12 * j + i]] += scale * block(i, j);
+  AddDenseBlock(slot_.data() + groups_[element].first_slot, block, scale, matrix_.valuePtr());
 }
 
 void SystemMatrix::AddGroupBlock(const Group& group, int i, int j, const Matrix3d& block,
@@ -221,6 +233,12 @@ void SystemMatrix::AddClearanceJointBlock(Index joint, int i, int j, const Matri
   AddGroupBlock(groups_[num_elements_ + num_point_masses_ + num_links_ + num_bodies_ +
                         num_attachments_ + joint],
                 i, j, block, scale);
+}
+
+void SystemMatrix::AddBeamElementBlock(Index beam, const Matrix24d& block, double scale) {
+  const Group& group = groups_[num_elements_ + num_point_masses_ + num_links_ + num_bodies_ +
+                               num_attachments_ + num_joints_ + beam];
+  AddDenseBlock(slot_.data() + group.first_slot, block, scale, matrix_.valuePtr());
 }
 
 void SystemMatrix::AddBlock3(Index row, Index col, const Matrix3d& block, double scale) {
