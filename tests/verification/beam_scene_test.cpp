@@ -4,7 +4,7 @@
 //    a beam node, the clamp fixing all 12 coordinates; without shear the deflection is 4.6 % less;
 //  - Saint-Venant torsion of a square bar, φ = TL/(GJ) (Timoshenko & Goodier 1970, §109), from a
 //    point moment on the end node (docs/theory.md, "Point moment on a beam node");
-//  - a mixed mesh, cable elements then beam elements sharing a node, against PL³/(3EI): a joint
+//  - a mixed mesh, beam elements then cable elements sharing a node, against PL³/(3EI): a joint
 //    that did not share the slope would be a hinge and the deflection far larger;
 //  - the first torsion frequency of a clamped–free shaft, f = (1/4L) √(GJ/(ρI_p)) (Blevins 1979,
 //    table 8-19), found among the modes of the modal analysis.
@@ -73,29 +73,34 @@ TEST(BeamScene, SaintVenantTorsionFromAnEndMoment) {
   EXPECT_LT((state.q.segment<3>(tip.position_dof) - Vector3d::UnitX()).norm(), 1e-8);
 }
 
-TEST(BeamScene, MixedMeshOfCableAndBeamElementsBendsAsOneCantilever) {
-  // 1 m steel bar of 10 × 10 mm: 4 cable elements to x = 0.5, then 4 beam elements; tip force
-  // 1 N along z: δ = PL³/(3EI) = 2.0 mm (shear adds 8e-5 of it; (δ/L)² nonlinearity 4e-6).
+TEST(BeamScene, MixedMeshOfBeamAndCableElementsBendsAsOneCantilever) {
+  // 1 m steel bar of 10 × 10 mm: 4 beam elements to x = 0.5, clamped, then 4 cable elements
+  // continuing them; tip force 1 N along z: δ = PL³/(3EI) = 2.0 mm (shear adds 4e-5 of it,
+  // (δ/L)² nonlinearity 4e-6). (The other order, a beam continuing a cable, has a free spin about
+  // its axis, which a cable does not hold, and needs a torsional support of its own in statics.)
   const Scene scene = ParseScene(R"(materials:
   steel: {youngs_modulus: 2.0e11, density: 7800, poisson_ratio: 0.3}
 sections:
   bar: {shape: rectangle, width: 0.01, height: 0.01}
 cables:
-  - {name: root, start: [0, 0, 0], end: [0.5, 0, 0], elements: 4, material: steel, section: bar}
-  - {name: tip, element: ancf_beam, orientation: [0, 0, 1], continues: root, start: [0.5, 0, 0],
-     end: [1, 0, 0], elements: 4, material: steel, section: bar}
+  - {name: root, element: ancf_beam, orientation: [0, 0, 1], start: [0, 0, 0], end: [0.5, 0, 0],
+     elements: 4, material: steel, section: bar}
+  - {name: tip, continues: root, start: [0.5, 0, 0], end: [1, 0, 0], elements: 4,
+     material: steel, section: bar}
 constraints:
   - {type: clamp, at: root.start}
 loads:
   - {type: point_force, at: tip.end, force: [0, 0, 1]}
 )");
   const Model& model = scene.model;
-  // The beam starts at the cable's end node: the same position and slope coordinates.
+  // The cable starts at the beam's end node: the same position and slope coordinates.
   const CableNode& joint = EndNode(model, "root");
   const CableNode& start = model.nodes()[model.cables()[model.FindCable("tip")].first_node];
   EXPECT_EQ(start.position_dof, joint.position_dof);
   EXPECT_EQ(start.slope_dof, joint.slope_dof);
-  EXPECT_GE(start.section_dof, 0);
+  EXPECT_GE(joint.section_dof, 0);
+  EXPECT_EQ(model.beam_elements().size(), 4u);
+  EXPECT_EQ(model.elements().size(), 8u);
   const State state = SolveStaticScene(scene);
   const double ei = 2.0e11 * 1e-8 / 12.0;
   const double expected = 1.0 / (3.0 * ei);

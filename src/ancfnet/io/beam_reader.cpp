@@ -12,15 +12,11 @@ namespace {
 BeamSection ReadBeamSection(const YamlValue& value, const std::string& name, double nu) {
   const YamlMap map = value.AsMap();
   const std::size_t shape = map.Get("shape").AsChoice({"circle", "rectangle", "general"});
-  if (shape == 0)
-    return map.Get("diameter").Locate([&] {
-      return MakeCircleBeamSection(map.Get("diameter").AsPositive(), nu);
-    });
+  // The dimensions were checked when the section was read; ν when the material was.
+  if (shape == 0) return MakeCircleBeamSection(map.Get("diameter").AsPositive(), nu);
   if (shape == 1)
-    return value.Locate([&] {
-      return MakeRectangleBeamSection(map.Get("height").AsPositive(),
-                                      map.Get("width").AsPositive(), nu);
-    });
+    return MakeRectangleBeamSection(map.Get("height").AsPositive(), map.Get("width").AsPositive(),
+                                    nu);
   BeamSection section;
   section.area = map.Get("area").AsPositive();
   for (const auto& [key, field] :

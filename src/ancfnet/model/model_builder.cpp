@@ -193,7 +193,7 @@ CableProperties MakeBeamCentreLineProperties(const CableSpec& spec) {
   if (drawn.axial_damping_time != 0.0 || drawn.bending_damping_time != 0.0 || drawn.tension_only)
     throw InputError(fmt::format(
         "cable '{}' is made of ancf_beam elements, which have no Kelvin–Voigt damping and no rope "
-        "law: use Rayleigh or modal damping",
+        "law: use modal damping",
         spec.name));
   const BeamElementParameters p =
       MakeBeamElementParameters(spec.beam->material, spec.beam->section, 1.0);
@@ -491,21 +491,15 @@ void ModelBuilder::AddRotatingClamp(const CablePointRef& at, const Vector3d& axi
   if (!std::isfinite(angle.rate)) throw InputError("a hub's rate must be finite");
   if (angle.kind == AngleProfile::Kind::kSpinUp) RequirePositive(angle.ramp_time, "spin-up time");
   AddClamp(at);
-  const CableNode& node = model_.nodes_[LocateNode(at)];
-  std::vector<std::pair<Index, bool>> blocks = {{node.position_dof, false},
-                                                {node.slope_dof, true}};
-  if (node.section_dof >= 0) {
-    blocks.emplace_back(node.section_dof, true);
-    blocks.emplace_back(node.section_dof + 3, true);
-  }
-  for (const auto& [dof, direction] : blocks) {
+  const Index position_dof = model_.nodes_[LocateNode(at)].position_dof;
+  for (const Index dof : ClampedBlocks(LocateNode(at))) {
     PrescribedBlock block;
     block.kind = PrescribedBlock::Kind::kRotation;
     block.dof = dof;
     block.initial = model_.initial_positions_.segment<3>(dof);
     block.axis = axis.normalized();
     block.center = center;
-    block.is_direction = direction;
+    block.is_direction = dof != position_dof;
     block.angle = angle;
     model_.prescribed_.push_back(block);
   }
@@ -546,11 +540,21 @@ void ModelBuilder::FixCoordinates(const CablePointRef& at, const CoordinateMask&
   }
 }
 
+std::vector<Index> ModelBuilder::ClampedBlocks(Index node_index) const {
+  const CableNode& node = model_.nodes_[node_index];
+  if (node.section_dof < 0) return {node.position_dof, node.slope_dof};
+  std::vector<Index> blocks = {node.position_dof, node.section_dof, node.section_dof + 3};
+  const bool cable_uses_slope =
+      std::any_of(model_.elements_.begin(), model_.elements_.end(), [&](const CableElement& e) {
+        return e.beam < 0 && (e.dofs[3] == node.slope_dof || e.dofs[9] == node.slope_dof);
+      });
+  if (cable_uses_slope) blocks.push_back(node.slope_dof);
+  return blocks;
+}
+
 void ModelBuilder::AddClamp(const CablePointRef& at) {
-  FixCoordinates(at, {true, true, true, true, true, true});
-  const CableNode& node = model_.nodes_[LocateNode(at)];
-  if (node.section_dof >= 0)
-    for (int k = 0; k < 6; ++k) model_.fixed_[node.section_dof + k] = true;
+  for (const Index block : ClampedBlocks(LocateNode(at)))
+    for (int k = 0; k < 3; ++k) model_.fixed_[block + k] = true;
 }
 
 void ModelBuilder::AddPin(const CablePointRef& at) {

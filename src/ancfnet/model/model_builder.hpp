@@ -131,15 +131,17 @@ class ModelBuilder {
   /// name, 0 < c < R_J, a non-zero axis, a valid law and a regularised friction law, anchors that
   /// name existing bodies, point masses or cable points, not both the ground. Bodies first.
   void AddClearanceJoint(const ClearanceJointSpec& spec);
-  /// Fixes position and slope of the node at `at` (which must be a node), and the section
-  /// gradients r_y, r_z of a beam node.
+  /// Fixes position and slope of the node at `at` (which must be a node). At a beam node it fixes
+  /// the position and the section directors d₂ = r_y, d₃ = r_z and leaves the slope r_x free,
+  /// so that the centre line may leave the clamp sheared as in Timoshenko's theory (w = 0, θ = 0,
+  /// w' = γ); the slope is fixed too when a cable element shares the node.
   void AddClamp(const CablePointRef& at);
   /// Fixes the position of the node at `at`; the slope stays free.
   void AddPin(const CablePointRef& at);
   /// Clamps the node at `at` to a hub turning by θ(t) about the axis through `center` along
   /// `axis` (normalised; non-zero): its position and slope are prescribed,
-  /// r(t) = c + R(θ) (r₀ − c), r'(t) = R(θ) r'₀, and so are r_y, r_z of a beam node
-  /// (model/prescribed_motion.hpp).
+  /// r(t) = c + R(θ) (r₀ − c), r'(t) = R(θ) r'₀; at a beam node the coordinates AddClamp fixes
+  /// there turn as directions (model/prescribed_motion.hpp).
   void AddRotatingClamp(const CablePointRef& at, const Vector3d& axis, const Vector3d& center,
                         const AngleProfile& angle);
   /// Fixes the chosen coordinates of the node at `at`.
@@ -162,6 +164,8 @@ class ModelBuilder {
 
  private:
   Index LocateNode(const CablePointRef& at) const;
+  // First coordinates of the 3-blocks a clamp fixes at a node (AddClamp).
+  std::vector<Index> ClampedBlocks(Index node) const;
   void CheckNameIsFree(const std::string& name) const;
   // The mass that moves with a located point: a point mass's, or half its cable element's.
   double PointMassOf(const CablePointRef& point) const;
