@@ -1,10 +1,9 @@
 // ANCF beams in dynamics, from scene text (issue 13):
 //  - energy balance: a steel cantilever of beam elements, spinning about its axis at t = 0 (the
 //    root held), swings under gravity and twists; T + U + V − W (the sections' spin in T) stays
-//    within 1 % of the largest kinetic energy with the undamped trapezoidal rule (ρ∞ = 1). (A
-//    dead end torque would not do: a fixed axial torque on a cantilever is not conservative and,
-//    undamped, makes it flutter at any value (Ziegler 1968, Principles of Structural Stability,
-//    §2.6); the run does blow up);
+//    within 1 % of the largest kinetic energy with the undamped trapezoidal rule (ρ∞ = 1). (Not
+//    a step end torque: a moment of fixed direction is not conservative in 3D (Ziegler 1968), and
+//    undamped runs with one grew without bound; docs/validation.md, "ANCF beams in scenes");
 //  - contact: a beam laid on a plane comes to rest on it and the contact force carries its
 //    weight within 2 % (the contact inspects the beam's centre line, the cable's Hermite curve).
 
