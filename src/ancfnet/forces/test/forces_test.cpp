@@ -101,11 +101,15 @@ Model MakeBodyModel() {
   return builder.Build();
 }
 
-// A mixed mesh: two cable elements, then two beam elements sharing the cable's end node, with
-// gravity, a point force and a distributed load on the beam and a moment on its end node.
+// A mixed mesh: two cable elements (with Kelvin–Voigt damping), then two beam elements sharing
+// the cable's end node, with gravity, a point force and a distributed load on the beam and a
+// moment on its end node.
 Model MakeBeamModel() {
   const CableProperties properties =
       MakeCableProperties({.youngs_modulus = 1.0e8, .density = 1200.0}, MakeCircleSection(0.02));
+  CableProperties damped = properties;
+  damped.axial_damping_time = 0.01;
+  damped.bending_damping_time = 0.02;
   const BeamCableSpec beam{
       .material = {.youngs_modulus = 1.0e8, .poisson_ratio = 0.3, .density = 1200.0},
       .section = MakeCircleBeamSection(0.02, 0.3),
@@ -113,7 +117,7 @@ Model MakeBeamModel() {
   ModelBuilder builder;
   builder.SetGravity(Vector3d(0.0, 0.0, -9.81));
   builder.AddCable({.name = "a", .start = Vector3d::Zero(), .end = Vector3d(1.0, 0.0, 0.0),
-                    .num_elements = 2, .properties = properties});
+                    .num_elements = 2, .properties = damped});
   builder.AddCable({.name = "b", .start = Vector3d(1.0, 0.0, 0.0), .end = Vector3d(2.0, 0.0, 0.0),
                     .num_elements = 2, .properties = properties, .beam = beam,
                     .start_cable = "a"});
