@@ -302,6 +302,7 @@ Index ModelBuilder::AddCable(const CableSpec& spec) {
     model_.nodes_.push_back(node);
   }
 
+  const CableProperties& p = properties;
   for (Index i = 0; i < spec.num_elements; ++i) {
     CableElement element;
     element.cable = cable_index;
@@ -315,16 +316,16 @@ Index ModelBuilder::AddCable(const CableSpec& spec) {
     }
     CableElementParameters& ep = element.parameters;
     ep.length = length / spec.num_elements;
-    ep.axial_stiffness = properties.axial_stiffness;
-    ep.bending_stiffness = properties.bending_stiffness;
-    ep.mass_per_length = properties.mass_per_length;
-    ep.axial_damping_time = properties.axial_damping_time;
-    ep.bending_damping_time = properties.bending_damping_time;
-    ep.tension_only = properties.tension_only;
-    ep.rope_smoothing_strain = properties.rope_smoothing_strain;
-    ep.bending_model = properties.bending_model;
-    ep.axial_gauss_points = properties.axial_gauss_points;
-    ep.bending_gauss_points = properties.bending_gauss_points;
+    ep.axial_stiffness = p.axial_stiffness;
+    ep.bending_stiffness = p.bending_stiffness;
+    ep.mass_per_length = p.mass_per_length;
+    ep.axial_damping_time = p.axial_damping_time;
+    ep.bending_damping_time = p.bending_damping_time;
+    ep.tension_only = p.tension_only;
+    ep.rope_smoothing_strain = p.rope_smoothing_strain;
+    ep.bending_model = p.bending_model;
+    ep.axial_gauss_points = p.axial_gauss_points;
+    ep.bending_gauss_points = p.bending_gauss_points;
     model_.elements_.push_back(element);
   }
   if (spec.beam) AddBeamElements(spec, cable_index);
