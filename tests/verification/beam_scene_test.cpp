@@ -7,7 +7,7 @@
 //  - a mixed mesh, beam elements then cable elements sharing a node, against PL³/(3EI): a joint
 //    that did not share the slope would be a hinge and the tip cable a mechanism;
 //  - the first torsion frequency of a clamped–free shaft, f = (1/4L) √(GJ/(ρI_p)) (Blevins 1979,
-//    table 8-19), found among the modes of the modal analysis.
+//    table 8-19), found among the modes of the modal analysis, and its Rayleigh damping ratio.
 
 #include <gtest/gtest.h>
 
@@ -116,8 +116,11 @@ loads:
 TEST(BeamScene, ModalAnalysisFindsTheFirstTorsionMode) {
   // Steel shaft, L = 0.1 m, d = 0.05 m, clamped at x = 0: f_torsion = (1/4L) √(G/ρ) (J = I_p for
   // a circle) = 7851 Hz, between the first bending pair (≈ 3.3 kHz) and the axial mode (12.7 kHz).
+  // Rayleigh damping C = β K₀ gives every mode ζ = β ω/2 (the beam elements' own K_e in C).
   const Scene scene = ParseScene(R"(materials:
   steel: {youngs_modulus: 2.0e11, density: 7800, poisson_ratio: 0.3}
+damping:
+  rayleigh: {alpha: 0, beta: 1.0e-7}
 sections:
   shaft: {shape: circle, diameter: 0.05}
 cables:
@@ -140,6 +143,8 @@ constraints:
   std::printf("shaft: torsion mode %ld at %.1f Hz (closed form %.1f Hz)\n",
               static_cast<long>(torsion), modes.frequency_hz[torsion], expected);
   EXPECT_NEAR(modes.frequency_hz[torsion], expected, 0.01 * expected);
+  const double omega = 2.0 * std::numbers::pi * modes.frequency_hz[torsion];
+  EXPECT_NEAR(modes.damping_ratio[torsion], 0.5e-7 * omega, 1e-3 * 0.5e-7 * omega);
 }
 
 }  // namespace

@@ -193,7 +193,7 @@ CableProperties MakeBeamCentreLineProperties(const CableSpec& spec) {
   if (drawn.axial_damping_time != 0.0 || drawn.bending_damping_time != 0.0 || drawn.tension_only)
     throw InputError(fmt::format(
         "cable '{}' is made of ancf_beam elements, which have no Kelvin–Voigt damping and no rope "
-        "law: use modal damping",
+        "law: use Rayleigh or modal damping",
         spec.name));
   const BeamElementParameters p =
       MakeBeamElementParameters(spec.beam->material, spec.beam->section, 1.0);
@@ -614,13 +614,8 @@ Model ModelBuilder::Build() const {
     throw InputError(
         "modal damping needs the modes of the model, which free rigid bodies do not have; use "
         "Rayleigh damping or make the bodies fixed");
-  if (!model_.beam_elements_.empty()) {
-    if (model_.damping_.rayleigh.alpha != 0.0 || model_.damping_.rayleigh.beta != 0.0)
-      throw InputError(
-          "Rayleigh damping of ancf_beam cables is not available yet; use modal damping");
-    if (model_.orbital_frame_)
-      throw InputError("ancf_beam cables are not available in an orbital (Hill) frame yet");
-  }
+  if (!model_.beam_elements_.empty() && model_.orbital_frame_)
+    throw InputError("ancf_beam cables are not available in an orbital (Hill) frame yet");
   Model model = model_;
   // A fixed coordinate does not move, unless it belongs to a moving point mass.
   for (Index i = 0; i < model.num_dofs(); ++i)

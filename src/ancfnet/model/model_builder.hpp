@@ -159,7 +159,7 @@ class ModelBuilder {
   /// Records a net's description (its knots, threads, perimeter); AddNet calls it.
   void AddNetDescription(const Net& net);
   /// The finished model. Throws InputError when it has no cable, or when beams meet what they do
-  /// not support yet (Rayleigh damping, an orbital frame).
+  /// not support yet (an orbital frame).
   Model Build() const;
 
  private:

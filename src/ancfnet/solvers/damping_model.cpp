@@ -19,11 +19,21 @@ DampingModel::DampingModel(const Model& model) : model_(model) {
     alpha_ = spec.rayleigh.alpha;
     const Vector12d rest = Vector12d::Zero();
     for (const CableElement& element : model.elements()) {
+      if (element.beam >= 0) {
+        element_rayleigh_.push_back(Matrix12d::Zero());
+        continue;
+      }
       Matrix12d stiffness;
       CalcCableInternalForce(element.parameters, model.Gather(element, q0), rest,
                              {.stiffness = &stiffness});
       element_rayleigh_.push_back(alpha_ * CalcCableMassMatrix(element.parameters) +
                                   spec.rayleigh.beta * stiffness);
+    }
+    for (const BeamElement& beam : model.beam_elements()) {
+      Matrix24d stiffness;
+      CalcBeamInternalForce(beam.parameters, model.Gather(beam, q0), {.stiffness = &stiffness});
+      beam_rayleigh_.push_back(alpha_ * CalcBeamMassMatrix(beam.parameters) +
+                               spec.rayleigh.beta * stiffness);
     }
   }
   const ModalDamping& modal = spec.modal;
@@ -66,6 +76,14 @@ void DampingModel::AddForces(const VectorXd& v, Workspace& ws) const {
       ws.viscous_force[elements[e].dofs[i]] += f[i];
     }
   }
+  const auto& beams = model_.beam_elements();
+  for (std::size_t b = 0; b < beam_rayleigh_.size(); ++b) {
+    const Vector24d f = beam_rayleigh_[b] * model_.Gather(beams[b], v);
+    for (int i = 0; i < kBeamElementDofs; ++i) {
+      ws.internal_force[beams[b].dofs[i]] += f[i];
+      ws.viscous_force[beams[b].dofs[i]] += f[i];
+    }
+  }
   if (alpha_ != 0.0) {
     for (const PointMass& point : model_.point_masses()) {
       const Vector3d f = alpha_ * point.mass * v.segment<3>(point.dof);
@@ -86,6 +104,8 @@ void DampingModel::AddRayleighJacobian(double weight, SystemMatrix* matrix) cons
   if (weight == 0.0) return;
   for (std::size_t e = 0; e < element_rayleigh_.size(); ++e)
     matrix->AddElementBlock(static_cast<Index>(e), element_rayleigh_[e], weight);
+  for (std::size_t b = 0; b < beam_rayleigh_.size(); ++b)
+    matrix->AddBeamElementBlock(static_cast<Index>(b), beam_rayleigh_[b], weight);
   if (alpha_ != 0.0) {
     const auto& points = model_.point_masses();
     for (std::size_t i = 0; i < points.size(); ++i)
