@@ -21,9 +21,9 @@ class Model;
 /// (the blocks of its first point, then of its second), each rigid body (x, ψ), each body
 /// attachment (the blocks of its point, then the body's x and ψ), each clearance joint (the blocks
 /// of its journal's anchor, then of its bearing's), each beam element (its eight blocks r_A,
-/// r_x,A, r_y,A, r_z,A, r_B, …; its centre line is also an element group), and the contact couplings that
-/// come and go while the model moves (the blocks of one owner, an element, a point mass or a
-/// body, then of the other).
+/// r_x,A, r_y,A, r_z,A, r_B, …; its centre line is also an element group), and the contact
+/// couplings that come and go while the model moves (the blocks of one owner, an element, a point
+/// mass or a body, then of the other).
 class SystemMatrix {
  public:
   /// Pattern of the model's couplings between unknowns of `dofs`; values zero.
