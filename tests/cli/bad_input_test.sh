@@ -153,6 +153,34 @@ expect_input_error static "$root/examples/net_drop_sphere.yaml" -o "$work/out_st
 expect_input_error modal "$root/examples/net_drop_sphere.yaml" -o "$work/out_modal"
 [[ $message == *"contact"* ]] || fail "modal with contact: the message does not say why: $message"
 
+# Beams (element: ancf_beam): each case is examples/beam_torsion.yaml with one mistake.
+scene="$root/examples/beam_torsion.yaml"
+"$ancfnet" check "$scene" >/dev/null || fail "the example scene $scene is refused"
+
+mutate beam_poisson_high 's/poisson_ratio: 0.33/poisson_ratio: 0.5/'
+expect_scene_error beam_poisson_high "poisson_ratio: 0.5" "poisson_ratio" "(-1, 0.5)"
+
+mutate beam_poisson_low 's/poisson_ratio: 0.33/poisson_ratio: -1.2/'
+expect_scene_error beam_poisson_low "poisson_ratio: -1.2" "poisson_ratio" "(-1, 0.5)"
+
+mutate beam_no_poisson 's/, poisson_ratio: 0.33//'
+expect_scene_error beam_no_poisson "material: aluminium" "material" "poisson_ratio"
+
+mutate beam_orientation_parallel 's/orientation: \[0, 1, 0\]/orientation: [2, 0, 0]/'
+expect_scene_error beam_orientation_parallel "orientation: \\[2" "orientation" "parallel"
+
+mutate beam_orientation_zero 's/orientation: \[0, 1, 0\]/orientation: [0, 0, 0]/'
+expect_scene_error beam_orientation_zero "orientation: \\[0, 0, 0" "orientation" "zero"
+
+mutate beam_no_orientation '/orientation:/d'
+expect_scene_error beam_no_orientation "- name: bar" "'orientation'" "missing required key"
+
+mutate beam_section_without_inertia 's/bar: {shape: rectangle, width: 0.01, height: 0.01}/bar: {shape: general, area: 1.0e-4, second_moment: 8.3e-10}/'
+expect_scene_error beam_section_without_inertia "bar: {shape: general" "second_moment_y" "ancf_beam needs"
+
+mutate beam_with_kelvin_voigt 's/poisson_ratio: 0.33/poisson_ratio: 0.33, axial_damping_time: 1.0e-3/'
+expect_scene_error beam_with_kelvin_voigt "- name: bar" "bar" "Kelvin"
+
 # Command-line mistakes.
 status=0
 "$ancfnet" run >/dev/null 2>&1 || status=$?

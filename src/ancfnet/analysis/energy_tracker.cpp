@@ -13,6 +13,11 @@ double CalcKineticEnergy(const Model& model, const Workspace& ws, const VectorXd
     const Vector12d ve = model.Gather(model.elements()[e], v);
     energy += 0.5 * ve.dot(ws.element_mass[e] * ve);
   }
+  // The spin of beam sections (their translation is in element_mass of the centre line).
+  for (std::size_t b = 0; b < model.beam_elements().size(); ++b) {
+    const Vector24d vb = model.Gather(model.beam_elements()[b], v);
+    energy += 0.5 * vb.dot(ws.beam_rotary_mass[b] * vb);
+  }
   for (const PointMass& point : model.point_masses())
     energy += 0.5 * point.mass * v.segment<3>(point.dof).squaredNorm();
   return energy + CalcBodyKineticEnergy(model, v);
@@ -21,7 +26,10 @@ double CalcKineticEnergy(const Model& model, const Workspace& ws, const VectorXd
 double CalcStrainEnergy(const Model& model, const Workspace& ws, const VectorXd& q) {
   double energy = 0.0;
   for (const CableElement& element : model.elements())
-    energy += CalcCableStrainEnergy(element.parameters, model.Gather(element, q));
+    if (element.beam < 0)
+      energy += CalcCableStrainEnergy(element.parameters, model.Gather(element, q));
+  for (const BeamElement& beam : model.beam_elements())
+    energy += CalcBeamStrainEnergy(beam.parameters, model.Gather(beam, q));
   return energy + CalcLinkEnergy(model, ws, q) + CalcAttachmentEnergy(model, ws, q) +
          ws.contact_energy + CalcClearanceJointEnergy(model, q, ws.body_rotation);
 }

@@ -49,6 +49,16 @@ std::vector<Index> JointBlocks(const Model& model, const JointAnchor& first,
   return group;
 }
 
+// values[slots[n j + i]] += scale · block(i, j) over a whole group of n coordinates (a slot of −1:
+// a fixed row or column, skipped).
+template <int N>
+void AddDenseBlock(const int* slots, const Eigen::Matrix<double, N, N>& block, double scale,
+                   double* values) {
+  for (int j = 0; j < N; ++j)
+    for (int i = 0; i < N; ++i)
+      if (slots[N * j + i] >= 0) values[slots[N * j + i]] += scale * block(i, j);
+}
+
 std::uint64_t PairKey(Index a, Index b) {
   return (static_cast<std::uint64_t>(a) << 32) | static_cast<std::uint64_t>(b);
 }
@@ -62,7 +72,8 @@ SystemMatrix::SystemMatrix(const Model& model, const DofMap& dofs)
       num_links_(static_cast<Index>(model.links().size())),
       num_bodies_(static_cast<Index>(model.rigid_bodies().size())),
       num_attachments_(static_cast<Index>(model.body_attachments().size())),
-      num_clearance_joints_(static_cast<Index>(model.clearance_joints().size())) {
+      num_clearance_joints_(static_cast<Index>(model.clearance_joints().size())),
+      num_ideal_joints_(static_cast<Index>(model.ideal_joints().size())) {
   for (const CableElement& element : model.elements())
     group_blocks_.push_back({element.dofs[0], element.dofs[3], element.dofs[6], element.dofs[9]});
   for (const PointMass& point : model.point_masses()) group_blocks_.push_back({point.dof});
@@ -86,6 +97,11 @@ SystemMatrix::SystemMatrix(const Model& model, const DofMap& dofs)
     group_blocks_.push_back(JointBlocks(model, joint.journal, joint.bearing));
   for (const IdealJoint& joint : model.ideal_joints())
     group_blocks_.push_back(JointBlocks(model, joint.first, joint.second));
+  for (const BeamElement& beam : model.beam_elements()) {
+    std::vector<Index> group;
+    for (int b = 0; b < kBeamElementBlocks; ++b) group.push_back(beam.dofs[3 * b]);
+    group_blocks_.push_back(group);
+  }
   Rebuild();
 }
 
@@ -190,11 +206,7 @@ void SystemMatrix::SetZero() {
 }
 
 void SystemMatrix::AddElementBlock(Index element, const Matrix12d& block, double scale) {
-  double* values = matrix_.valuePtr();
-  const int* slots = slot_.data() + groups_[element].first_slot;
-  for (int j = 0; j < kCableElementDofs; ++j)
-    for (int i = 0; i < kCableElementDofs; ++i)
-      if (slots[12 * j + i] >= 0) values[slots[12 * j + i]] += scale * block(i, j);
+  AddDenseBlock(slot_.data() + groups_[element].first_slot, block, scale, matrix_.valuePtr());
 }
 
 void SystemMatrix::AddGroupBlock(const Group& group, int i, int j, const Matrix3d& block,
@@ -237,6 +249,13 @@ void SystemMatrix::AddIdealJointBlock(Index joint, int i, int j, const Matrix3d&
   AddGroupBlock(groups_[num_elements_ + num_point_masses_ + num_links_ + num_bodies_ +
                         num_attachments_ + num_clearance_joints_ + joint],
                 i, j, block, scale);
+}
+
+void SystemMatrix::AddBeamElementBlock(Index beam, const Matrix24d& block, double scale) {
+  const Group& group =
+      groups_[num_elements_ + num_point_masses_ + num_links_ + num_bodies_ + num_attachments_ +
+              num_clearance_joints_ + num_ideal_joints_ + beam];
+  AddDenseBlock(slot_.data() + group.first_slot, block, scale, matrix_.valuePtr());
 }
 
 void SystemMatrix::AddBlock3(Index row, Index col, const Matrix3d& block, double scale) {

@@ -10,6 +10,7 @@
 #include "ancfnet/assembly/contact_coupling_settings.hpp"
 #include "ancfnet/assembly/dof_map.hpp"
 #include "ancfnet/common/types.hpp"
+#include "ancfnet/elements/beam_shape.hpp"
 
 namespace ancfnet {
 
@@ -20,9 +21,9 @@ class Model;
 /// (the blocks of its first point, then of its second), each rigid body (x, ψ), each body
 /// attachment (the blocks of its point, then the body's x and ψ), each clearance joint (the blocks
 /// of its journal's anchor, then of its bearing's), each ideal joint (its first anchor's blocks,
-/// then its second's), and the contact couplings that
-/// come and go while the model moves (the blocks of one owner, an element, a point mass or a
-/// body, then of the other).
+/// then its second's), each beam element (its eight blocks r_A, r_x,A, r_y,A, r_z,A, r_B, …; its
+/// centre line is also an element group), and the contact couplings that come and go while the
+/// model moves (the blocks of one owner, an element, a point mass or a body, then of the other).
 class SystemMatrix {
  public:
   /// Pattern of the model's couplings between unknowns of `dofs`; values zero.
@@ -33,6 +34,8 @@ class SystemMatrix {
   /// Adds scale · block to the entries of cable element `element` (rows/columns of fixed
   /// coordinates are skipped). No search, no allocation.
   void AddElementBlock(Index element, const Matrix12d& block, double scale = 1.0);
+  /// Adds scale · block to the entries of beam element `beam` (Model::beam_elements()).
+  void AddBeamElementBlock(Index beam, const Matrix24d& block, double scale = 1.0);
   /// Adds scale · block to the 3×3 diagonal block of point mass `point`.
   void AddPointMassBlock(Index point, const Matrix3d& block, double scale = 1.0);
   /// Adds scale · block to the 3×3 block (row block i, column block j) of link `link`, its
@@ -115,6 +118,7 @@ class SystemMatrix {
   Index num_bodies_ = 0;
   Index num_attachments_ = 0;
   Index num_clearance_joints_ = 0;
+  Index num_ideal_joints_ = 0;
   // Index in matrix_.valuePtr() of each group entry, or −1 when its row or column is fixed.
   std::vector<int> slot_;
 };

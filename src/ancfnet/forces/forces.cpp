@@ -1,5 +1,7 @@
 #include "ancfnet/forces/forces.hpp"
 
+#include <array>
+
 #include "ancfnet/elements/hermite_shape.hpp"
 #include "ancfnet/forces/body_forces.hpp"
 #include "ancfnet/forces/link_forces.hpp"
@@ -13,8 +15,49 @@ namespace {
 // Below this many elements the parallel region costs more than it saves.
 constexpr std::size_t kParallelElements = 64;
 
-void ScatterAdd(const CableElement& element, const Vector12d& f, VectorXd* global) {
-  for (int i = 0; i < kCableElementDofs; ++i) (*global)[element.dofs[i]] += f[i];
+template <class Element, int N>
+void ScatterAdd(const Element& element, const Eigen::Matrix<double, N, 1>& f, VectorXd* global) {
+  for (int i = 0; i < N; ++i) (*global)[element.dofs[i]] += f[i];
+}
+
+// The force (and, when `stiffness` is set, the Jacobian) of every element in ws.element_* and
+// ws.beam_*: the cable kernel for cable elements, the beam kernel for beam elements (their centre
+// lines keep the zeros the Workspace gave them).
+void CalcElementForces(const Model& model, const VectorXd& q, const VectorXd& v, bool stiffness,
+                       bool damping, Workspace& ws) {
+  const auto& elements = model.elements();
+  const Index n = static_cast<Index>(elements.size());
+#pragma omp parallel for schedule(static) if (elements.size() >= kParallelElements)
+  for (Index e = 0; e < n; ++e) {
+    if (elements[e].beam >= 0) continue;
+    CalcCableInternalForce(elements[e].parameters, model.Gather(elements[e], q),
+                           model.Gather(elements[e], v),
+                           {.force = &ws.element_force[e],
+                            .viscous_force = &ws.element_viscous_force[e],
+                            .stiffness = stiffness ? &ws.element_stiffness[e] : nullptr,
+                            .damping = damping ? &ws.element_damping[e] : nullptr});
+  }
+  const auto& beams = model.beam_elements();
+  const Index num_beams = static_cast<Index>(beams.size());
+#pragma omp parallel for schedule(static) if (beams.size() >= kParallelElements)
+  for (Index b = 0; b < num_beams; ++b)
+    CalcBeamInternalForce(beams[b].parameters, model.Gather(beams[b], q),
+                          {.force = &ws.beam_force[b],
+                           .stiffness = stiffness ? &ws.beam_stiffness[b] : nullptr});
+}
+
+// The blocks a point moment acts on, each with its weight: the slope r' of a cable node; r_x,
+// r_y and r_z of a beam node, each with ½, so that a rigid rotation δθ of an orthonormal frame
+// does the work M·δθ (docs/theory.md, "Point moment on a beam node").
+// Unused entries have weight 0 (no allocation in the time loop).
+struct MomentBlock {
+  Index dof = 0;
+  double weight = 0.0;
+};
+std::array<MomentBlock, 3> MomentBlocks(const Model& model, Index node) {
+  const CableNode& n = model.nodes()[node];
+  if (n.section_dof < 0) return {{{n.slope_dof, 1.0}}};
+  return {{{n.slope_dof, 0.5}, {n.section_dof, 0.5}, {n.section_dof + 3, 0.5}}};
 }
 
 // scale · m I on the diagonal block of every point mass.
@@ -27,20 +70,16 @@ void AddPointMassMatrix(const Model& model, double scale, SystemMatrix* matrix) 
 }  // namespace
 
 void CalcInternalForces(const Model& model, const VectorXd& q, const VectorXd& v, Workspace& ws) {
+  CalcElementForces(model, q, v, /*stiffness=*/false, /*damping=*/false, ws);
   const auto& elements = model.elements();
-  const Index n = static_cast<Index>(elements.size());
-#pragma omp parallel for schedule(static) if (elements.size() >= kParallelElements)
-  for (Index e = 0; e < n; ++e) {
-    CalcCableInternalForce(
-        elements[e].parameters, model.Gather(elements[e], q), model.Gather(elements[e], v),
-        {.force = &ws.element_force[e], .viscous_force = &ws.element_viscous_force[e]});
-  }
   ws.internal_force.setZero();
   ws.viscous_force.setZero();
-  for (Index e = 0; e < n; ++e) {
+  for (std::size_t e = 0; e < elements.size(); ++e) {
     ScatterAdd(elements[e], ws.element_force[e], &ws.internal_force);
     ScatterAdd(elements[e], ws.element_viscous_force[e], &ws.viscous_force);
   }
+  for (std::size_t b = 0; b < model.beam_elements().size(); ++b)
+    ScatterAdd(model.beam_elements()[b], ws.beam_force[b], &ws.internal_force);
   AddLinkForces(model, q, v, ws);
   AddBodyForces(model, q, v, ws);
   AddClearanceJointForces(model, q, v, ws);
@@ -54,10 +93,11 @@ void CalcExternalForces(const Model& model, const VectorXd& q, double load_facto
     const HermiteShape shape = CalcHermiteShape(load.point.xi, element.parameters.length);
     ScatterAdd(element, DistributeForce(shape.s, load.force), &ws.applied_force);
   }
-  for (const PointMoment& load : model.point_moments()) {
-    const Index slope = model.NodeSlopeDof(load.node);
-    ws.applied_force.segment<3>(slope) += CalcSlopeMomentForce(load.moment, q.segment<3>(slope));
-  }
+  for (const PointMoment& load : model.point_moments())
+    for (const auto [dof, weight] : MomentBlocks(model, load.node))
+      if (weight != 0.0)
+        ws.applied_force.segment<3>(dof) +=
+          weight * CalcSlopeMomentForce(load.moment, q.segment<3>(dof));
   ws.applied_force *= load_factor;
   ws.external_force = ws.applied_force + load_factor * ws.gravity_force;
 }
@@ -68,15 +108,7 @@ void AssembleIterationMatrix(const Model& model, const VectorXd& q, const Vector
   const auto& elements = model.elements();
   const Index n = static_cast<Index>(elements.size());
   const bool need_damping = weights.damping != 0.0;
-#pragma omp parallel for schedule(static) if (elements.size() >= kParallelElements)
-  for (Index e = 0; e < n; ++e) {
-    CalcCableInternalForce(elements[e].parameters, model.Gather(elements[e], q),
-                           model.Gather(elements[e], v),
-                           {.force = &ws.element_force[e],
-                            .viscous_force = &ws.element_viscous_force[e],
-                            .stiffness = &ws.element_stiffness[e],
-                            .damping = need_damping ? &ws.element_damping[e] : nullptr});
-  }
+  CalcElementForces(model, q, v, /*stiffness=*/true, need_damping, ws);
   matrix->SetZero();
   ws.internal_force.setZero();
   ws.viscous_force.setZero();
@@ -86,6 +118,13 @@ void AssembleIterationMatrix(const Model& model, const VectorXd& q, const Vector
     matrix->AddElementBlock(e, ws.element_stiffness[e], weights.stiffness);
     if (weights.mass != 0.0) matrix->AddElementBlock(e, ws.element_mass[e], weights.mass);
     if (need_damping) matrix->AddElementBlock(e, ws.element_damping[e], weights.damping);
+  }
+  for (std::size_t b = 0; b < model.beam_elements().size(); ++b) {
+    const Index beam = static_cast<Index>(b);
+    ScatterAdd(model.beam_elements()[b], ws.beam_force[b], &ws.internal_force);
+    matrix->AddBeamElementBlock(beam, ws.beam_stiffness[b], weights.stiffness);
+    if (weights.mass != 0.0)
+      matrix->AddBeamElementBlock(beam, ws.beam_rotary_mass[b], weights.mass);
   }
   AddLinkForces(model, q, v, ws);
   AddLinkJacobians(model, q, v, weights, ws, matrix);
@@ -100,17 +139,19 @@ void AssembleIterationMatrix(const Model& model, const VectorXd& q, const Vector
     AddBodyMassMatrix(model, weights.mass, matrix);
   }
   // Point moments depend on the slope: −c_K λ ∂Q_ext/∂q.
-  for (const PointMoment& load : model.point_moments()) {
-    const Index slope = model.NodeSlopeDof(load.node);
-    matrix->AddBlock3(slope, slope, CalcSlopeMomentJacobian(load.moment, q.segment<3>(slope)),
-                      -weights.stiffness * load_factor);
-  }
+  for (const PointMoment& load : model.point_moments())
+    for (const auto [dof, weight] : MomentBlocks(model, load.node))
+      if (weight != 0.0)
+        matrix->AddBlock3(dof, dof, CalcSlopeMomentJacobian(load.moment, q.segment<3>(dof)),
+                        -weight * weights.stiffness * load_factor);
 }
 
 void AssembleMassMatrix(const Model& model, const Workspace& ws, SystemMatrix* matrix) {
   matrix->SetZero();
   for (std::size_t e = 0; e < model.elements().size(); ++e)
     matrix->AddElementBlock(static_cast<Index>(e), ws.element_mass[e]);
+  for (std::size_t b = 0; b < model.beam_elements().size(); ++b)
+    matrix->AddBeamElementBlock(static_cast<Index>(b), ws.beam_rotary_mass[b]);
   AddPointMassMatrix(model, 1.0, matrix);
   AddBodyMassMatrix(model, 1.0, matrix);
 }

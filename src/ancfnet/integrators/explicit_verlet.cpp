@@ -25,6 +25,11 @@ ExplicitVerletIntegrator::ExplicitVerletIntegrator(const Model& model)
     throw InputError(
         "contact friction: the LuGre law needs an implicit integrator (generalized_alpha or "
         "implicit_midpoint), not explicit_verlet");
+  // Its critical step is estimated from the cable kernel alone.
+  if (!model.beam_elements().empty())
+    throw InputError(
+        "ancf_beam cables need an implicit integrator (generalized_alpha or implicit_midpoint), "
+        "not explicit_verlet");
   contact_.SetBodyRotations(&ws_.body_rotation);
 }
 

@@ -22,6 +22,10 @@ using NamedList = std::vector<std::pair<std::string, T>>;
 struct Library {
   NamedList<Material> materials;
   NamedList<Section> sections;
+  // The maps they were read from, read again for a beam (io/beam_reader.hpp), which needs ν and
+  // the section's shape.
+  NamedList<YamlValue> material_values;
+  NamedList<YamlValue> section_values;
 };
 
 // The definition named by `value`; the error lists the known names or suggests the closest.

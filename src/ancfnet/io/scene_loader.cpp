@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "ancfnet/common/error.hpp"
+#include "ancfnet/io/beam_reader.hpp"
 #include "ancfnet/io/clearance_joint_reader.hpp"
 #include "ancfnet/io/ideal_joint_reader.hpp"
 #include "ancfnet/io/closest_name.hpp"
@@ -36,7 +37,9 @@ constexpr int kMaxElementsPerCable = 1'000'000;
 
 Material ReadMaterial(const YamlValue& value) {
   const YamlMap map = value.AsMap();
-  map.CheckKeys({"youngs_modulus", "density", "axial_damping_time", "bending_damping_time"});
+  map.CheckKeys({"youngs_modulus", "density", "axial_damping_time", "bending_damping_time",
+                 "poisson_ratio", "shear_modulus"});
+  ReadPoissonRatio(map);  // checked here; beams read it (io/beam_reader.hpp)
   Material material;
   material.youngs_modulus = map.Get("youngs_modulus").AsPositive();
   material.density = map.Get("density").AsPositive();
@@ -47,10 +50,19 @@ Material ReadMaterial(const YamlValue& value) {
 
 Section ReadSection(const YamlValue& value) {
   const YamlMap map = value.AsMap();
-  const std::size_t shape = map.Get("shape").AsChoice({"circle", "rectangle"});
+  const std::size_t shape = map.Get("shape").AsChoice({"circle", "rectangle", "general"});
   if (shape == 0) {
     map.CheckKeys({"shape", "diameter"});
     return MakeCircleSection(map.Get("diameter").AsPositive());
+  }
+  if (shape == 2) {
+    // The beam keys are read by io/beam_reader.hpp.
+    map.CheckKeys({"shape", "area", "second_moment", "radius", "second_moment_y",
+                   "second_moment_z", "torsion_constant", "shear_correction"});
+    Section section{.area = map.Get("area").AsPositive()};
+    if (auto v = map.Find("second_moment")) section.second_moment = v->AsNonNegative();
+    if (auto v = map.Find("radius")) section.radius = v->AsNonNegative();
+    return section;
   }
   map.CheckKeys({"shape", "width", "height"});
   const double width = map.Get("width").AsPositive();
@@ -158,7 +170,7 @@ void ReadCable(const YamlValue& item, const Library& library, ModelBuilder* buil
   const YamlMap map = item.AsMap();
   map.CheckKeys({"name", "start", "end", "elements", "material", "section", "tension_only",
                  "rope_smoothing_strain", "bending", "axial_gauss_points", "bending_gauss_points",
-                 "initial_velocity", "breaking_force"});
+                 "initial_velocity", "breaking_force", "element", "orientation", "continues"});
   CableSpec spec;
   spec.name = map.Get("name").AsString();
   spec.start = map.Get("start").AsVector3();
@@ -181,6 +193,8 @@ void ReadCable(const YamlValue& item, const Library& library, ModelBuilder* buil
   if (auto v = map.Find("axial_gauss_points")) properties.axial_gauss_points = v->AsInt(1, 8);
   if (auto v = map.Find("bending_gauss_points")) properties.bending_gauss_points = v->AsInt(1, 8);
   if (auto v = map.Find("breaking_force")) spec.breaking_force = v->AsPositive();
+  spec.beam = ReadBeamCable(map, spec.end - spec.start, library);
+  if (auto v = map.Find("continues")) spec.start_cable = v->AsString();
   item.Locate([&] { builder->AddCable(spec); });
   if (auto v = map.Find("initial_velocity")) ReadInitialVelocity(*v, spec.name, builder);
 }
@@ -362,6 +376,9 @@ Scene ReadScene(const YamlValue& root, const std::filesystem::path& scene_direct
   Library library;
   library.materials = ReadNamed<Material>(scene, "materials", ReadMaterial);
   library.sections = ReadNamed<Section>(scene, "sections", ReadSection);
+  const auto as_written = [](const YamlValue& value) { return value; };
+  library.material_values = ReadNamed<YamlValue>(scene, "materials", as_written);
+  library.section_values = ReadNamed<YamlValue>(scene, "sections", as_written);
   std::vector<std::string> point_masses;
   if (auto v = scene.Find("point_masses"))
     for (const YamlValue& item : v->AsList()) ReadPointMass(item, &builder, &point_masses);

@@ -53,6 +53,13 @@ void VtkSeriesWriter::CollectSamples(const Model& model, const State& state) {
         const double tension = CalcCableStationTension(p, e, forces, xi);
         samples_.push_back({InterpolatePosition(e, shape.s), InterpolatePosition(e_dot, shape.s),
                             strain.axial, strain.curvature, tension});
+        if (element.beam >= 0) {
+          const BeamElement& beam = model.beam_elements()[element.beam];
+          // d = (1 − ξ) d_A + ξ d_B, blocks 2, 3 (node A) and 6, 7 (node B).
+          const Vector24d b = model.Gather(beam, state.q);
+          samples_.back().d2 = (1.0 - xi) * b.segment<3>(6) + xi * b.segment<3>(18);
+          samples_.back().d3 = (1.0 - xi) * b.segment<3>(9) + xi * b.segment<3>(21);
+        }
       }
     }
   }
@@ -108,6 +115,10 @@ std::string VtkSeriesWriter::FormatPolyData(const Model& model) const {
                      [](const Sample& s, auto o) { fmt::format_to(o, "{}", s.curvature); });
   AppendVtkDataArray(&out, "tension", 1, samples_,
                      [](const Sample& s, auto o) { fmt::format_to(o, "{}", s.tension); });
+  AppendVtkDataArray(&out, "section_d2", 3, samples_,
+                     [&](const Sample& s, auto o) { WriteVtkVector(s.d2, o); });
+  AppendVtkDataArray(&out, "section_d3", 3, samples_,
+                     [&](const Sample& s, auto o) { WriteVtkVector(s.d3, o); });
   out += "      </PointData>\n      <Points>\n";
   AppendVtkDataArray(&out, "position", 3, samples_,
                      [&](const Sample& s, auto o) { WriteVtkVector(s.position, o); });

@@ -24,6 +24,9 @@ namespace ancfnet {
 ///  - `tension` T (N), the elastic section force along the tangent recovered from the elements'
 ///    resultant forces (CalcCableStationForces, CalcCableStationTension; docs/theory.md, "Tension
 ///    recovery"), never below 0 in a tension-only cable. Kelvin–Voigt damping is not included.
+///  - `section_d2`, `section_d3`: the cross-section directors d₂ = r_y(ξ), d₃ = r_z(ξ) of a beam
+///    cable, linear in ξ (elements/beam_shape.hpp), for glyphs of its section frame; zero for
+///    cables and bodies.
 /// After the cables, each rigid body adds its frame: 4 points (its origin x_WB and the tips of its
 /// body axes, drawn as long as its radius of gyration √(tr J_B / m)) and 3 two-point lines, with
 /// their velocities and zero strain, curvature and tension.
@@ -54,6 +57,8 @@ class VtkSeriesWriter {
     double axial_strain;
     double curvature;
     double tension;
+    Vector3d d2 = Vector3d::Zero();
+    Vector3d d3 = Vector3d::Zero();
   };
   void CollectSamples(const Model& model, const State& state);
   // Throws SolverError at `time` for the first non-finite value in samples_.

@@ -45,6 +45,20 @@ BeamSection MakeRectangleBeamSection(double height, double width, double poisson
           .shear_correction_z = k};
 }
 
+BeamSection MakeCircleBeamSection(double diameter, double poisson_ratio) {
+  RequirePositive(diameter, "section diameter");
+  RequirePoissonRatio(poisson_ratio);
+  const double d2 = diameter * diameter;
+  const double second_moment = std::numbers::pi * d2 * d2 / 64.0;
+  const double k = 6.0 * (1.0 + poisson_ratio) / (7.0 + 6.0 * poisson_ratio);
+  return {.area = std::numbers::pi * d2 / 4.0,
+          .second_moment_y = second_moment,
+          .second_moment_z = second_moment,
+          .torsion_constant = 2.0 * second_moment,
+          .shear_correction_y = k,
+          .shear_correction_z = k};
+}
+
 BeamElementParameters MakeBeamElementParameters(const BeamMaterial& material,
                                                 const BeamSection& section, double length) {
   RequirePositive(length, "element length");

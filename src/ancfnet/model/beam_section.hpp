@@ -33,6 +33,11 @@ struct BeamMaterial {
 /// and ν ∈ (−1, 0.5).
 BeamSection MakeRectangleBeamSection(double height, double width, double poisson_ratio);
 
+/// Solid circle of diameter d: A = πd²/4, I_y = I_z = πd⁴/64, J = πd⁴/32 (the polar moment, exact
+/// for a circle), Cowper's (1966) k = 6(1 + ν)/(7 + 6ν). Throws InputError unless d > 0 and
+/// ν ∈ (−1, 0.5).
+BeamSection MakeCircleBeamSection(double diameter, double poisson_ratio);
+
 /// Element parameters of elements/ancf_beam.hpp with G = E/(2(1 + ν)), the cross-section
 /// penalties EA and GA, and the rotary inertias ρI_y, ρI_z. Throws InputError (the message names
 /// the offending quantity) unless L, E, ρ, A, I_y, I_z, J, k_y, k_z > 0, k ≤ 1 and ν ∈ (−1, 0.5).

@@ -76,6 +76,12 @@ Vector12d Model::Gather(const CableElement& element, const VectorXd& x) const {
   return e;
 }
 
+Vector24d Model::Gather(const BeamElement& element, const VectorXd& x) const {
+  Vector24d e;
+  for (int i = 0; i < kBeamElementDofs; ++i) e[i] = x[element.dofs[i]];
+  return e;
+}
+
 Vector3d Model::Interpolate(const MaterialPoint& point, const VectorXd& x) const {
   const CableElement& element = elements_[point.element];
   const HermiteShape shape = CalcHermiteShape(point.xi, element.parameters.length);

@@ -11,6 +11,7 @@
 
 #include "ancfnet/common/types.hpp"
 #include "ancfnet/contact/contact_spec.hpp"
+#include "ancfnet/elements/ancf_beam.hpp"
 #include "ancfnet/elements/ancf_cable.hpp"
 #include "ancfnet/elements/connection_law.hpp"
 #include "ancfnet/model/clearance_joint.hpp"
@@ -21,6 +22,10 @@
 #include "ancfnet/model/rigid_body.hpp"
 
 namespace ancfnet {
+
+/// The element a cable is made of: the gradient-deficient cable (elements/ancf_cable.hpp) or the
+/// shear-deformable, torsional beam (elements/ancf_beam.hpp).
+enum class ElementKind { kCable, kBeam };
 
 /// A cable: a chain of ANCF elements between consecutive nodes.
 struct Cable {
@@ -33,14 +38,19 @@ struct Cable {
   /// Tension (N) at which the cable fails: every link holding it then breaks (analysis/
   /// failure.hpp). Infinite: never.
   double breaking_force = std::numeric_limits<double>::infinity();
+  ElementKind element = ElementKind::kCable;
 };
 
 /// Where the coordinates of a cable node live: its position r (3 coordinates from
 /// position_dof), which an ideal knot shares with the other threads meeting there, and its
-/// slope r' (3 coordinates from slope_dof), always its own.
+/// slope r' (3 coordinates from slope_dof), shared only with a cable that continues this one
+/// (CableSpec::start_cable). A beam node adds the section gradients r_y, r_z (6 coordinates from
+/// section_dof); a cable element on the same node uses only r and r' (docs/theory.md, "Beams in
+/// a model").
 struct CableNode {
   Index position_dof = 0;
   Index slope_dof = 0;
+  Index section_dof = -1;  ///< r_y then r_z of a beam node; −1 for a cable node
 };
 
 /// A concentrated mass with three position coordinates: a knot, a bullet, any lumped mass.
@@ -51,10 +61,22 @@ struct PointMass {
 };
 
 /// One ANCF cable element and where its 12 coordinates live in the global vector.
+/// For an element of a beam cable it is the beam's centre line: the same cubic Hermite in
+/// (r_A, r_x,A, r_B, r_x,B), with the beam's length and ρA, so that loads, gravity, the
+/// translational mass, contact and outputs treat both kinds alike; its stiffness is then the
+/// beam element's `beam` (CalcInternalForces skips the cable kernel).
 struct CableElement {
   Index cable = 0;
   std::array<Index, kCableElementDofs> dofs{};
   CableElementParameters parameters;
+  Index beam = -1;  ///< index in Model::beam_elements(), or −1 for a cable element
+};
+
+/// One ANCF beam element: where its 24 coordinates [r_A, r_x,A, r_y,A, r_z,A, r_B, …] live.
+struct BeamElement {
+  Index element = 0;  ///< its centre line in Model::elements()
+  std::array<Index, kBeamElementDofs> dofs{};
+  BeamElementParameters parameters;
 };
 
 /// A material point of a cable: element and local coordinate ξ ∈ [0, 1].
@@ -119,7 +141,9 @@ struct PointForce {
 
 /// Moment (N m) at a cable node, acting on the slope coordinates r' through
 /// Q_r' = (M × r') / |r'|² (docs/theory.md, "Point moment"). The cable carries no torsion, so the
-/// component of M along the cable does no work.
+/// component of M along the cable does no work. At a beam node it acts on r_x, r_y and r_z, each
+/// with half that force, so that a rigid rotation δθ of an orthonormal frame does the work M·δθ,
+/// torsion included (docs/theory.md, "Point moment on a beam node").
 struct PointMoment {
   Index node = 0;
   Vector3d moment = Vector3d::Zero();
@@ -132,7 +156,8 @@ struct DistributedLoad {
 };
 
 /// The system description. Coordinates are numbered in the order things are added: six per
-/// cable node (r, r'; three when the position is a knot's), three per point mass, six per rigid
+/// cable node (r, r'; three when the position is a knot's; six more, r_y and r_z, at a beam node),
+/// three per point mass, six per rigid
 /// body (x, ψ). A coordinate is either free (an unknown) or fixed at its initial value.
 class Model {
  public:
@@ -155,6 +180,8 @@ class Model {
   /// True when a rigid body moves freely (static and modal analyses refuse such models).
   bool has_free_bodies() const;
   const std::vector<CableElement>& elements() const { return elements_; }
+  /// The beam elements; each has its centre line in elements().
+  const std::vector<BeamElement>& beam_elements() const { return beam_elements_; }
   const std::vector<PointForce>& point_forces() const { return point_forces_; }
   const std::vector<PointMoment>& point_moments() const { return point_moments_; }
   const std::vector<DistributedLoad>& distributed_loads() const { return distributed_loads_; }
@@ -175,6 +202,8 @@ class Model {
   /// Total mass of the cables, point masses and rigid bodies (kg).
   double total_mass() const;
 
+  /// Nodal coordinates of a beam element gathered from a global vector.
+  Vector24d Gather(const BeamElement& element, const VectorXd& x) const;
   /// First global coordinate of a node's position r and of its slope r'.
   Index NodePositionDof(Index node) const { return nodes_[node].position_dof; }
   Index NodeSlopeDof(Index node) const { return nodes_[node].slope_dof; }
@@ -211,6 +240,7 @@ class Model {
   std::vector<Cable> cables_;
   std::vector<CableNode> nodes_;
   std::vector<CableElement> elements_;
+  std::vector<BeamElement> beam_elements_;
   std::vector<PointMass> point_masses_;
   std::vector<SpringDamperLink> links_;
   std::vector<Net> nets_;

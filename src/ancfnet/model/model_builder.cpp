@@ -188,6 +188,55 @@ Index ModelBuilder::EndPositionDof(const std::string& knot, const Vector3d& posi
   return dof;
 }
 
+namespace {
+
+// The properties of a beam's centre line (model.hpp, CableElement): EA, the smaller EI, ρA; the
+// drawing radius of `drawn`. A beam has no Kelvin–Voigt damping and no rope law: refused here.
+CableProperties MakeBeamCentreLineProperties(const CableSpec& spec) {
+  const CableProperties& drawn = spec.properties;
+  if (drawn.axial_damping_time != 0.0 || drawn.bending_damping_time != 0.0 || drawn.tension_only)
+    throw InputError(fmt::format(
+        "cable '{}' is made of ancf_beam elements, which have no Kelvin–Voigt damping and no rope "
+        "law: use Rayleigh or modal damping",
+        spec.name));
+  const BeamElementParameters p =
+      MakeBeamElementParameters(spec.beam->material, spec.beam->section, 1.0);
+  CableProperties properties;
+  properties.axial_stiffness = p.axial_stiffness;
+  properties.bending_stiffness = std::min(p.bending_stiffness_y, p.bending_stiffness_z);
+  properties.mass_per_length = p.mass_per_length;
+  properties.radius = drawn.radius;
+  return properties;
+}
+
+}  // namespace
+
+CableNode ModelBuilder::ContinuedNode(const CableSpec& spec, const Vector3d& slope,
+                                      const BeamSectionFrame* frame) const {
+  if (!spec.start_knot.empty())
+    throw InputError(fmt::format(
+        "cable '{}' cannot both continue cable '{}' and start at knot '{}'", spec.name,
+        spec.start_cable, spec.start_knot));
+  const Cable& earlier = model_.cables_[model_.FindCable(spec.start_cable)];
+  const CableNode node = model_.nodes_[earlier.first_node + earlier.num_elements];
+  const VectorXd& q0 = model_.initial_positions_;
+  const Vector3d end = q0.segment<3>(node.position_dof);
+  const Vector3d end_slope = q0.segment<3>(node.slope_dof);
+  const double scale = std::max(1.0, end.norm());
+  if ((end - spec.start).norm() > 1e-9 * scale || (end_slope - slope).norm() > 1e-9 * slope.norm())
+    throw InputError(fmt::format(
+        "cable '{}' continues cable '{}', so it must start at its end [{}, {}, {}] in the same "
+        "direction and with the same stretch",
+        spec.name, spec.start_cable, end.x(), end.y(), end.z()));
+  if (frame != nullptr && node.section_dof >= 0 &&
+      ((q0.segment<3>(node.section_dof) - frame->d2).norm() > 1e-9 ||
+       (q0.segment<3>(node.section_dof + 3) - frame->d3).norm() > 1e-9))
+    throw InputError(fmt::format(
+        "beam '{}' continues beam '{}' but its orientation gives another section frame",
+        spec.name, spec.start_cable));
+  return node;
+}
+
 Index ModelBuilder::AddCable(const CableSpec& spec) {
   CheckNameIsFree(spec.name);
   RequireFinite(spec.start, "cable start");
@@ -199,13 +248,27 @@ Index ModelBuilder::AddCable(const CableSpec& spec) {
     throw InputError(fmt::format("cable '{}' has zero length (start equals end)", spec.name));
   RequireNonNegative(spec.natural_length, "natural length");
   const double length = spec.natural_length > 0.0 ? spec.natural_length : distance;
-  ValidateProperties(spec.properties);
+  const CableProperties properties =
+      spec.beam ? MakeBeamCentreLineProperties(spec) : spec.properties;
+  ValidateProperties(properties);
   RequireBreakingForce(spec.breaking_force, "breaking force of a cable");
   if (std::isfinite(spec.breaking_force) && !(spec.start_knot.empty() && spec.end_knot.empty()))
     throw InputError(fmt::format(
         "cable '{}' can fail but shares a knot's position (an ideal knot), so it could never come "
         "off: use compliant knots (links) for threads that break",
         spec.name));
+  // The reference directors of a beam: d₂ from the orientation by Gram–Schmidt, d₃ = t × d₂.
+  std::optional<BeamSectionFrame> frame;
+  if (spec.beam) {
+    RequireFinite(spec.beam->orientation, "beam orientation");
+    frame = MakeBeamSectionFrame(spec.end - spec.start, spec.beam->orientation);
+  }
+  // The slope r' = (end − start)/L is the stretch of the straight cable against its natural
+  // length L: a unit tangent when stress-free.
+  const Vector3d slope = (spec.end - spec.start) / length;
+  std::optional<CableNode> continued;
+  if (!spec.start_cable.empty())
+    continued = ContinuedNode(spec, slope, frame ? &*frame : nullptr);
 
   Cable cable;
   cable.name = spec.name;
@@ -213,30 +276,38 @@ Index ModelBuilder::AddCable(const CableSpec& spec) {
   cable.first_element = static_cast<Index>(model_.elements_.size());
   cable.num_elements = spec.num_elements;
   cable.length = length;
-  cable.properties = spec.properties;
+  cable.properties = properties;
   cable.breaking_force = spec.breaking_force;
+  cable.element = spec.beam ? ElementKind::kBeam : ElementKind::kCable;
   const Index cable_index = static_cast<Index>(model_.cables_.size());
   model_.cables_.push_back(cable);
   model_.names_.emplace(cable.name, std::pair{Model::NamedKind::kCable, cable_index});
 
-  // Nodes along the segment. The slope r' = (end − start)/L is the stretch of the straight cable
-  // against its natural length L: a unit tangent when stress-free.
-  const Vector3d slope = (spec.end - spec.start) / length;
   for (Index i = 0; i <= spec.num_elements; ++i) {
     const double s = static_cast<double>(i) / spec.num_elements;
     const Vector3d r = spec.start + s * (spec.end - spec.start);
     CableNode node;
-    if (i == 0)
-      node.position_dof = EndPositionDof(spec.start_knot, r, "start");
-    else if (i == spec.num_elements)
-      node.position_dof = EndPositionDof(spec.end_knot, r, "end");
-    else
-      node.position_dof = AddCoordinates(r);
-    node.slope_dof = AddCoordinates(slope);
+    if (i == 0 && continued) {
+      node = *continued;
+    } else {
+      if (i == 0)
+        node.position_dof = EndPositionDof(spec.start_knot, r, "start");
+      else if (i == spec.num_elements)
+        node.position_dof = EndPositionDof(spec.end_knot, r, "end");
+      else
+        node.position_dof = AddCoordinates(r);
+      node.slope_dof = AddCoordinates(slope);
+    }
+    if (!frame) node.section_dof = -1;  // a cable continuing a beam ignores r_y, r_z
+    if (frame && node.section_dof < 0) {
+      VectorXd section(6);
+      section << frame->d2, frame->d3;
+      node.section_dof = AddCoordinates(section);
+    }
     model_.nodes_.push_back(node);
   }
 
-  const CableProperties& p = spec.properties;
+  const CableProperties& p = properties;
   for (Index i = 0; i < spec.num_elements; ++i) {
     CableElement element;
     element.cable = cable_index;
@@ -262,7 +333,31 @@ Index ModelBuilder::AddCable(const CableSpec& spec) {
     ep.bending_gauss_points = p.bending_gauss_points;
     model_.elements_.push_back(element);
   }
+  if (spec.beam) AddBeamElements(spec, cable_index);
   return cable_index;
+}
+
+void ModelBuilder::AddBeamElements(const CableSpec& spec, Index cable_index) {
+  const Cable& cable = model_.cables_[cable_index];
+  const BeamElementParameters parameters = MakeBeamElementParameters(
+      spec.beam->material, spec.beam->section, cable.length / cable.num_elements);
+  for (Index i = 0; i < cable.num_elements; ++i) {
+    BeamElement beam;
+    beam.element = cable.first_element + i;
+    beam.parameters = parameters;
+    for (int n = 0; n < 2; ++n) {
+      const CableNode& node = model_.nodes_[cable.first_node + i + n];
+      for (int k = 0; k < 3; ++k) {
+        const int first = kBeamNodeDofs * n + k;
+        beam.dofs[first] = node.position_dof + k;
+        beam.dofs[first + 3] = node.slope_dof + k;
+        beam.dofs[first + 6] = node.section_dof + k;
+        beam.dofs[first + 9] = node.section_dof + 3 + k;
+      }
+    }
+    model_.elements_[beam.element].beam = static_cast<Index>(model_.beam_elements_.size());
+    model_.beam_elements_.push_back(beam);
+  }
 }
 
 Index ModelBuilder::AddPointMass(const std::string& name, double mass, const Vector3d& position,
@@ -406,16 +501,15 @@ void ModelBuilder::AddRotatingClamp(const CablePointRef& at, const Vector3d& axi
   if (!std::isfinite(angle.rate)) throw InputError("a hub's rate must be finite");
   if (angle.kind == AngleProfile::Kind::kSpinUp) RequirePositive(angle.ramp_time, "spin-up time");
   AddClamp(at);
-  const CableNode& node = model_.nodes_[LocateNode(at)];
-  for (const auto& [dof, direction] :
-       {std::pair{node.position_dof, false}, {node.slope_dof, true}}) {
+  const Index position_dof = model_.nodes_[LocateNode(at)].position_dof;
+  for (const Index dof : ClampedBlocks(LocateNode(at))) {
     PrescribedBlock block;
     block.kind = PrescribedBlock::Kind::kRotation;
     block.dof = dof;
     block.initial = model_.initial_positions_.segment<3>(dof);
     block.axis = axis.normalized();
     block.center = center;
-    block.is_direction = direction;
+    block.is_direction = dof != position_dof;
     block.angle = angle;
     model_.prescribed_.push_back(block);
   }
@@ -456,8 +550,21 @@ void ModelBuilder::FixCoordinates(const CablePointRef& at, const CoordinateMask&
   }
 }
 
+std::vector<Index> ModelBuilder::ClampedBlocks(Index node_index) const {
+  const CableNode& node = model_.nodes_[node_index];
+  if (node.section_dof < 0) return {node.position_dof, node.slope_dof};
+  std::vector<Index> blocks = {node.position_dof, node.section_dof, node.section_dof + 3};
+  const bool cable_uses_slope =
+      std::any_of(model_.elements_.begin(), model_.elements_.end(), [&](const CableElement& e) {
+        return e.beam < 0 && (e.dofs[3] == node.slope_dof || e.dofs[9] == node.slope_dof);
+      });
+  if (cable_uses_slope) blocks.push_back(node.slope_dof);
+  return blocks;
+}
+
 void ModelBuilder::AddClamp(const CablePointRef& at) {
-  FixCoordinates(at, {true, true, true, true, true, true});
+  for (const Index block : ClampedBlocks(LocateNode(at)))
+    for (int k = 0; k < 3; ++k) model_.fixed_[block + k] = true;
 }
 
 void ModelBuilder::AddPin(const CablePointRef& at) {
@@ -494,6 +601,10 @@ void ModelBuilder::SetInitialVelocity(const std::string& cable_name, const Vecto
     model_.initial_velocities_.segment<3>(node.position_dof) =
         velocity + angular_velocity.cross(r - center);
     model_.initial_velocities_.segment<3>(node.slope_dof) = angular_velocity.cross(slope);
+    if (node.section_dof >= 0)
+      for (const Index dof : {node.section_dof, node.section_dof + 3})
+        model_.initial_velocities_.segment<3>(dof) =
+            angular_velocity.cross(Vector3d(model_.initial_positions_.segment<3>(dof)));
   }
 }
 
@@ -512,6 +623,8 @@ Model ModelBuilder::Build() const {
     throw InputError(
         "modal damping needs the modes of the model, which free rigid bodies do not have; use "
         "Rayleigh damping or make the bodies fixed");
+  if (!model_.beam_elements_.empty() && model_.orbital_frame_)
+    throw InputError("ancf_beam cables are not available in an orbital (Hill) frame yet");
   Model model = model_;
   // A fixed coordinate does not move, unless it belongs to a moving point mass.
   for (Index i = 0; i < model.num_dofs(); ++i)

@@ -9,11 +9,22 @@
 #include <utility>
 #include <vector>
 
+#include "ancfnet/model/beam_section.hpp"
 #include "ancfnet/model/clearance_joint_spec.hpp"
 #include "ancfnet/model/ideal_joint_spec.hpp"
 #include "ancfnet/model/model.hpp"
 
 namespace ancfnet {
+
+/// What makes a cable a beam of ANCF beam elements (elements/ancf_beam.hpp): its material, its
+/// section in the principal axes (y along d₂, z along d₃) and the direction of d₂ at the start,
+/// `orientation`, from which the reference directors are made by Gram–Schmidt against the axis
+/// (MakeBeamSectionFrame: d₂ ⊥ axis, d₃ = t × d₂).
+struct BeamCableSpec {
+  BeamMaterial material;
+  BeamSection section;
+  Vector3d orientation = Vector3d::Zero();  ///< non-zero, not parallel to end − start
+};
 
 /// A straight cable from `start` to `end` divided into equal elements. Its natural (stress-free)
 /// length defaults to |end − start|; a longer one starts slack (compressed, |r'| < 1), a shorter
@@ -31,6 +42,15 @@ struct CableSpec {
   /// Tension (N) at which the cable fails and the links holding it break; > 0, infinite: never.
   /// A cable that can fail cannot share a knot's position (it would stay attached).
   double breaking_force = std::numeric_limits<double>::infinity();
+  /// Set: the cable is made of beam elements, and `properties` keep only the drawing radius
+  /// (EA, EI and ρA of its centre line come from the beam; damping times and the rope law must
+  /// stay unset, the beam element has neither).
+  std::optional<BeamCableSpec> beam = std::nullopt;
+  /// An earlier cable whose end node this cable's start shares, position and slope (and the
+  /// section gradients when both are beams): a mixed mesh, cable elements then beam elements in
+  /// one line. This cable must be its straight continuation: `start` at its end, the same
+  /// direction and stretch (and, for two beams, the same section frame). Excludes start_knot.
+  std::string start_cable = {};
 };
 
 /// A point of a named cable at fraction s ∈ [0, 1] of its reference length.
@@ -119,13 +139,17 @@ class ModelBuilder {
   /// body; a non-zero axis; the two sides' points within 1e-9 m (relative to the model's size)
   /// of each other at t = 0. Bodies first.
   void AddIdealJoint(const IdealJointSpec& spec);
-  /// Fixes position and slope of the node at `at` (which must be a node).
+  /// Fixes position and slope of the node at `at` (which must be a node). At a beam node it fixes
+  /// the position and the section directors d₂ = r_y, d₃ = r_z and leaves the slope r_x free,
+  /// so that the centre line may leave the clamp sheared as in Timoshenko's theory (w = 0, θ = 0,
+  /// w' = γ); the slope is fixed too when a cable element shares the node.
   void AddClamp(const CablePointRef& at);
   /// Fixes the position of the node at `at`; the slope stays free.
   void AddPin(const CablePointRef& at);
   /// Clamps the node at `at` to a hub turning by θ(t) about the axis through `center` along
   /// `axis` (normalised; non-zero): its position and slope are prescribed,
-  /// r(t) = c + R(θ) (r₀ − c), r'(t) = R(θ) r'₀ (model/prescribed_motion.hpp).
+  /// r(t) = c + R(θ) (r₀ − c), r'(t) = R(θ) r'₀; at a beam node the coordinates AddClamp fixes
+  /// there turn as directions (model/prescribed_motion.hpp).
   void AddRotatingClamp(const CablePointRef& at, const Vector3d& axis, const Vector3d& center,
                         const AngleProfile& angle);
   /// Fixes the chosen coordinates of the node at `at`.
@@ -142,11 +166,14 @@ class ModelBuilder {
                           const Vector3d& center = Vector3d::Zero());
   /// Records a net's description (its knots, threads, perimeter); AddNet calls it.
   void AddNetDescription(const Net& net);
-  /// The finished model. Throws InputError when it has no cable.
+  /// The finished model. Throws InputError when it has no cable, or when beams meet what they do
+  /// not support yet (an orbital frame).
   Model Build() const;
 
  private:
   Index LocateNode(const CablePointRef& at) const;
+  // First coordinates of the 3-blocks a clamp fixes at a node (AddClamp).
+  std::vector<Index> ClampedBlocks(Index node) const;
   void CheckNameIsFree(const std::string& name) const;
   // Throws InputError when a clearance or ideal joint is already named `name`.
   void CheckJointNameIsFree(const std::string& name) const;
@@ -156,6 +183,11 @@ class ModelBuilder {
   Index AddCoordinates(const VectorXd& initial_values);
   // Position coordinates of a cable end: the named knot's, or new ones at `position`.
   Index EndPositionDof(const std::string& knot, const Vector3d& position, const char* which);
+  // The node a cable continuing `spec.start_cable` starts at (checked to be its continuation).
+  CableNode ContinuedNode(const CableSpec& spec, const Vector3d& slope,
+                          const BeamSectionFrame* frame) const;
+  // Appends the beam elements of a beam cable whose centre-line elements are already added.
+  void AddBeamElements(const CableSpec& spec, Index cable_index);
   Model model_;
 };
 

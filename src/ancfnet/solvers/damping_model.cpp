@@ -11,6 +11,22 @@
 #include "ancfnet/solvers/modal.hpp"
 
 namespace ancfnet {
+namespace {
+
+// ws.internal_force and ws.viscous_force += C_e v_e over the coordinates of a cable or beam
+// element.
+template <class Element, int N>
+void AddElementDampingForce(const Model& model, const Element& element,
+                            const Eigen::Matrix<double, N, N>& damping, const VectorXd& v,
+                            Workspace& ws) {
+  const Eigen::Matrix<double, N, 1> f = damping * model.Gather(element, v);
+  for (int i = 0; i < N; ++i) {
+    ws.internal_force[element.dofs[i]] += f[i];
+    ws.viscous_force[element.dofs[i]] += f[i];
+  }
+}
+
+}  // namespace
 
 DampingModel::DampingModel(const Model& model) : model_(model) {
   const DampingSpec& spec = model.damping();
@@ -19,11 +35,21 @@ DampingModel::DampingModel(const Model& model) : model_(model) {
     alpha_ = spec.rayleigh.alpha;
     const Vector12d rest = Vector12d::Zero();
     for (const CableElement& element : model.elements()) {
+      if (element.beam >= 0) {
+        element_rayleigh_.push_back(Matrix12d::Zero());
+        continue;
+      }
       Matrix12d stiffness;
       CalcCableInternalForce(element.parameters, model.Gather(element, q0), rest,
                              {.stiffness = &stiffness});
       element_rayleigh_.push_back(alpha_ * CalcCableMassMatrix(element.parameters) +
                                   spec.rayleigh.beta * stiffness);
+    }
+    for (const BeamElement& beam : model.beam_elements()) {
+      Matrix24d stiffness;
+      CalcBeamInternalForce(beam.parameters, model.Gather(beam, q0), {.stiffness = &stiffness});
+      beam_rayleigh_.push_back(alpha_ * CalcBeamMassMatrix(beam.parameters) +
+                               spec.rayleigh.beta * stiffness);
     }
   }
   const ModalDamping& modal = spec.modal;
@@ -58,14 +84,10 @@ DampingModel::DampingModel(const Model& model) : model_(model) {
 }
 
 void DampingModel::AddForces(const VectorXd& v, Workspace& ws) const {
-  const auto& elements = model_.elements();
-  for (std::size_t e = 0; e < element_rayleigh_.size(); ++e) {
-    const Vector12d f = element_rayleigh_[e] * model_.Gather(elements[e], v);
-    for (int i = 0; i < kCableElementDofs; ++i) {
-      ws.internal_force[elements[e].dofs[i]] += f[i];
-      ws.viscous_force[elements[e].dofs[i]] += f[i];
-    }
-  }
+  for (std::size_t e = 0; e < element_rayleigh_.size(); ++e)
+    AddElementDampingForce(model_, model_.elements()[e], element_rayleigh_[e], v, ws);
+  for (std::size_t b = 0; b < beam_rayleigh_.size(); ++b)
+    AddElementDampingForce(model_, model_.beam_elements()[b], beam_rayleigh_[b], v, ws);
   if (alpha_ != 0.0) {
     for (const PointMass& point : model_.point_masses()) {
       const Vector3d f = alpha_ * point.mass * v.segment<3>(point.dof);
@@ -86,6 +108,8 @@ void DampingModel::AddRayleighJacobian(double weight, SystemMatrix* matrix) cons
   if (weight == 0.0) return;
   for (std::size_t e = 0; e < element_rayleigh_.size(); ++e)
     matrix->AddElementBlock(static_cast<Index>(e), element_rayleigh_[e], weight);
+  for (std::size_t b = 0; b < beam_rayleigh_.size(); ++b)
+    matrix->AddBeamElementBlock(static_cast<Index>(b), beam_rayleigh_[b], weight);
   if (alpha_ != 0.0) {
     const auto& points = model_.point_masses();
     for (std::size_t i = 0; i < points.size(); ++i)

@@ -14,7 +14,8 @@ namespace ancfnet {
 
 class DampingModel {
  public:
-  /// Rayleigh: per element α M_e + β K_e(q₀) and α m per point mass. Modal: the lowest
+  /// Rayleigh: per element α M_e + β K_e(q₀) (a beam element's, its centre line contributing
+  /// nothing) and α m per point mass. Modal: the lowest
   /// elastic modes Φ of the reference configuration and B = M Φ, C = B diag(2 ζ_i ω_i) Bᵀ.
   /// Throws SolverError when the modes for modal damping cannot be found.
   explicit DampingModel(const Model& model);
@@ -31,6 +32,7 @@ class DampingModel {
  private:
   const Model& model_;
   std::vector<Matrix12d> element_rayleigh_;  // empty without Rayleigh damping
+  std::vector<Matrix24d> beam_rayleigh_;     // per beam element; empty without Rayleigh damping
   double alpha_ = 0.0;
   MatrixXd modal_basis_;         // B = M Φ (num_dofs × k); no columns without modal damping
   VectorXd modal_coefficients_;  // 2 ζ_i ω_i (1/s)

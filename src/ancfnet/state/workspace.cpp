@@ -12,6 +12,8 @@ Workspace::Workspace(const Model& model)
       element_viscous_force(model.elements().size()),
       element_stiffness(model.elements().size()),
       element_damping(model.elements().size()),
+      beam_force(model.beam_elements().size()),
+      beam_stiffness(model.beam_elements().size()),
       link_broken(model.links().size(), 0),
       joint_history(model.clearance_joints().size()),
       internal_force(VectorXd::Zero(model.num_dofs())),
@@ -25,6 +27,15 @@ Workspace::Workspace(const Model& model)
     element_mass[e] = CalcCableMassMatrix(p);
     const Vector12d fg = CalcCableDistributedForce(p, p.mass_per_length * model.gravity());
     for (int i = 0; i < kCableElementDofs; ++i) gravity_force[elements[e].dofs[i]] += fg[i];
+  }
+  for (const BeamElement& beam : model.beam_elements()) {
+    BeamElementParameters rotary = beam.parameters;
+    rotary.mass_per_length = 0.0;
+    beam_rotary_mass.push_back(CalcBeamMassMatrix(rotary));
+    element_force[beam.element].setZero();
+    element_viscous_force[beam.element].setZero();
+    element_stiffness[beam.element].setZero();
+    element_damping[beam.element].setZero();
   }
   for (const PointMass& point : model.point_masses())
     gravity_force.segment<3>(point.dof) += point.mass * model.gravity();

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "ancfnet/common/types.hpp"
+#include "ancfnet/elements/beam_shape.hpp"
 #include "ancfnet/state/state.hpp"
 
 namespace ancfnet {
@@ -16,6 +17,9 @@ struct Workspace {
 
   // Constant, filled by the constructor.
   std::vector<Matrix12d> element_mass;  ///< consistent mass matrix of each element
+  /// Rotary-inertia part of each beam element's consistent mass, ∫ (ρI_z S₂ᵀS₂ + ρI_y S₃ᵀS₃) dx;
+  /// its translational part ∫ ρA SᵣᵀSᵣ dx is element_mass of its centre line (the same Hermite).
+  std::vector<Matrix24d> beam_rotary_mass;
   VectorXd gravity_force;      ///< ∫ ρA Sᵀ g dx, m g of point masses and free bodies (N)
   VectorXd distributed_force;  ///< ∫ Sᵀ w dx of the distributed loads (N)
 
@@ -24,6 +28,10 @@ struct Workspace {
   std::vector<Vector12d> element_viscous_force;
   std::vector<Matrix12d> element_stiffness;
   std::vector<Matrix12d> element_damping;
+  // Per beam element, filled by CalcInternalForces / AssembleIterationMatrix; the entries of its
+  // centre line above stay zero.
+  std::vector<Vector24d> beam_force;
+  std::vector<Matrix24d> beam_stiffness;
 
   // Copied from State::link_broken by the integrators before they evaluate forces; the force,
   // Jacobian and energy of a broken link are skipped.

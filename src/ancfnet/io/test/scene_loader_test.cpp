@@ -305,7 +305,7 @@ const BadScene kBadScenes[] = {
     {"UnknownKeyListsAllowed", Cantilever("    section: bar\n", "    section: bar\n    foo: 1\n"),
      "scene.yaml:13:5: unknown key 'foo' in 'cables[0]'; allowed keys: name, start, end, elements, "
      "material, section, tension_only, rope_smoothing_strain, bending, axial_gauss_points, "
-     "bending_gauss_points, initial_velocity, breaking_force"},
+     "bending_gauss_points, initial_velocity, breaking_force, element, orientation, continues"},
     {"DuplicateKey", Cantilever("    elements: 16\n", "    elements: 16\n    elements: 8\n"),
      "scene.yaml:11:5: duplicate key 'elements' (first given at line 10)"},
     {"MissingRequiredKey", Cantilever(", density: 7800", ""),
@@ -350,7 +350,7 @@ const BadScene kBadScenes[] = {
     {"SectionWidthZero", Cantilever("width: 0.01", "width: 0"),
      "scene.yaml:5:34: expected a number > 0, got '0' (key 'width')"},
     {"SectionShapeUnknown", Cantilever("shape: rectangle", "shape: square"),
-     "scene.yaml:5:16: expected one of circle, rectangle, got 'square' (key 'shape')"},
+     "scene.yaml:5:16: expected one of circle, rectangle, general, got 'square' (key 'shape')"},
     {"CircleWithWidth", Cantilever("shape: rectangle", "shape: circle, diameter: 0.01"),
      "scene.yaml:5:40: unknown key 'width' in 'bar'; allowed keys: shape, diameter"},
     {"ZeroLengthCable", Cantilever("end: [1, 0, 0]", "end: [0, 0, 0]"),
