@@ -65,7 +65,8 @@ NetTopology ReadGridTopology(const YamlMap& map, bool diamond) {
   if (auto v = map.Find("center")) grid.center = v->AsVector3();
   if (auto v = map.Find("axis_u")) grid.axis_u = v->AsVector3();
   if (auto v = map.Find("axis_v")) grid.axis_v = v->AsVector3();
-  return map.Get("side").Locate([&] { return MakeGridNet(grid); });
+  // The grid builder checks the sides, axes and centre together: its errors name the net.
+  return map.value().Locate([&] { return MakeGridNet(grid); });
 }
 
 // The material of `map`, or else of `fallback` (a thread falls back on its net).

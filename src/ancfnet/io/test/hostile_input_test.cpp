@@ -122,6 +122,15 @@ probes:
 )";
   EXPECT_EQ(ErrorOf(Cantilever("probes:\n", net)),
             "scene.yaml:18:53: a mesh of 2 m does not fit in a net of side 1 m (key 'mesh_size')");
+  // Axes that are not orthonormal: the message names the net, not its side.
+  const std::string axes = R"(nets:
+  - {name: net, type: square, side: 1.0, meshes: 2, axis_u: [1, 1, 0], material: steel,
+     section: bar}
+probes:
+)";
+  EXPECT_EQ(ErrorOf(Cantilever("probes:\n", axes)),
+            "scene.yaml:18:5: net axes u = [1, 1, 0] and v = [0, 1, 0] must be unit vectors "
+            "(key 'nets[0]')");
 }
 
 TEST(HostileInput, ANetTooLargeForTheMemoryIsRefusedBeforeItIsBuilt) {
