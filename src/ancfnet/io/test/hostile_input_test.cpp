@@ -24,6 +24,13 @@ constexpr const char* kTipProbe = "  - {name: tip, quantity: position, at: beam.
 // The cantilever with its probe line replaced by `probes` (each line "  - {…}").
 std::string WithProbes(const std::string& probes) { return Cantilever(kTipProbe, probes); }
 
+// The cantilever with a square net of steel bars whose other keys are `fields` (line 18 holds
+// "  - {name: net, type: square, side: 1.0, " and then `fields`).
+std::string WithNet(const std::string& fields) {
+  return Cantilever("probes:\n", "nets:\n  - {name: net, type: square, side: 1.0, " + fields +
+                                      ", material: steel,\n     section: bar}\nprobes:\n");
+}
+
 TEST(HostileInput, NamesThatWouldBreakTheCsvOrTheJsonAreRefused) {
   const std::string why =
       "a name may not hold commas, double quotes, line breaks or other control characters (it "
@@ -115,31 +122,16 @@ probes:
 )";
   EXPECT_EQ(ErrorOf(Cantilever("probes:\n", contact)),
             "scene.yaml:18:50: expected a number in [1, 3], got '100' (key 'exponent')");
-  const std::string net = R"(nets:
-  - {name: net, type: square, side: 1.0, mesh_size: 2.0, center: [0, 0, 1], material: steel,
-     section: bar}
-probes:
-)";
-  EXPECT_EQ(ErrorOf(Cantilever("probes:\n", net)),
+  EXPECT_EQ(ErrorOf(WithNet("mesh_size: 2.0, center: [0, 0, 1]")),
             "scene.yaml:18:53: a mesh of 2 m does not fit in a net of side 1 m (key 'mesh_size')");
   // Axes that are not orthonormal: the message names the net, not its side.
-  const std::string axes = R"(nets:
-  - {name: net, type: square, side: 1.0, meshes: 2, axis_u: [1, 1, 0], material: steel,
-     section: bar}
-probes:
-)";
-  EXPECT_EQ(ErrorOf(Cantilever("probes:\n", axes)),
+  EXPECT_EQ(ErrorOf(WithNet("meshes: 2, axis_u: [1, 1, 0]")),
             "scene.yaml:18:5: net axes u = [1, 1, 0] and v = [0, 1, 0] must be unit vectors "
             "(key 'nets[0]')");
 }
 
 TEST(HostileInput, ANetTooLargeForTheMemoryIsRefusedBeforeItIsBuilt) {
-  const std::string net = R"(nets:
-  - {name: net, type: square, side: 1.0, meshes: 10000, center: [0, 0, 1], material: steel,
-     section: bar}
-probes:
-)";
-  const std::string error = ErrorOf(Cantilever("probes:\n", net));
+  const std::string error = ErrorOf(WithNet("meshes: 10000, center: [0, 0, 1]"));
   EXPECT_EQ(error.rfind("scene.yaml:18:50: a net of 10000 × 10000 meshes has 2e+08 threads and "
                         "would need at least 4.4e+03 GB; this machine has ",
                         0),
