@@ -245,18 +245,21 @@ double CalcCableAxialForce(const CableElementParameters& p, double strain) {
   return p.axial_stiffness * std::max(strain, 0.0);
 }
 
+double CalcCableAxialEnergyDensity(const CableElementParameters& p, double strain) {
+  const double ea = p.axial_stiffness;
+  if (!p.tension_only) return 0.5 * ea * strain * strain;
+  if (p.rope_smoothing_strain > 0.0)
+    return ea * CalcSmoothRopeLaw(strain, p.rope_smoothing_strain).energy;
+  const double stretch = std::max(strain, 0.0);
+  return 0.5 * ea * stretch * stretch;
+}
+
 double CalcCableStrainEnergy(const CableElementParameters& p, const Vector12d& e) {
   double energy = 0.0;
   const GaussRule& axial = GetGaussRule(p.axial_gauss_points);
   for (int i = 0; i < axial.size; ++i) {
     const double eps = CalcCableStrain(p, e, axial.points[i]).axial;
-    double density = 0.5 * eps * eps;  // ∫ N dε / EA
-    if (p.tension_only && p.rope_smoothing_strain > 0.0) {
-      density = CalcSmoothRopeLaw(eps, p.rope_smoothing_strain).energy;
-    } else if (p.tension_only) {
-      density = 0.5 * std::max(eps, 0.0) * std::max(eps, 0.0);
-    }
-    energy += axial.weights[i] * p.length * p.axial_stiffness * density;
+    energy += axial.weights[i] * p.length * CalcCableAxialEnergyDensity(p, eps);
   }
   const GaussRule& bending = GetGaussRule(p.bending_gauss_points);
   for (int i = 0; i < bending.size; ++i) {

@@ -74,6 +74,10 @@ struct CableStrain {
 };
 CableStrain CalcCableStrain(const CableElementParameters& p, const Vector12d& e, double xi);
 
+/// Elastic axial energy per unit reference length (J/m) at an axial strain ε, ∫ N dε: EA ε²/2;
+/// for ropes EA max(ε, 0)²/2, or EA ψ(ε) with the smooth rope law.
+double CalcCableAxialEnergyDensity(const CableElementParameters& p, double strain);
+
 /// Elastic axial force (N) for an axial strain ε: EA ε; for ropes EA max(ε, 0), or with the
 /// smooth rope law EA φ(ε) of elements/rope_law.hpp (docs/theory.md, "Smooth rope law").
 double CalcCableAxialForce(const CableElementParameters& p, double strain);

@@ -2,6 +2,7 @@
 
 #include <array>
 
+#include "ancfnet/elements/ancf_cable_step_force.hpp"
 #include "ancfnet/elements/hermite_shape.hpp"
 #include "ancfnet/forces/body_forces.hpp"
 #include "ancfnet/forces/link_forces.hpp"
@@ -84,6 +85,22 @@ void CalcInternalForces(const Model& model, const VectorXd& q, const VectorXd& v
   AddBodyForces(model, q, v, ws);
   AddClearanceJointForces(model, q, v, ws);
   AddOrbitalFrameForces(model, q, v, ws);
+}
+
+void AddStepForceCorrections(const Model& model, const VectorXd& q_start, const VectorXd& q_end,
+                             Workspace& ws) {
+  const auto& elements = model.elements();
+  const Index n = static_cast<Index>(elements.size());
+#pragma omp parallel for schedule(static) if (elements.size() >= kParallelElements)
+  for (Index e = 0; e < n; ++e) {
+    if (elements[e].beam >= 0) continue;
+    ws.element_step_correction[e] = CalcCableStepForceCorrection(
+        elements[e].parameters, model.Gather(elements[e], q_start),
+        model.Gather(elements[e], q_end), ws.element_force[e] - ws.element_viscous_force[e]);
+  }
+  for (Index e = 0; e < n; ++e)
+    if (elements[e].beam < 0)
+      ScatterAdd(elements[e], ws.element_step_correction[e], &ws.internal_force);
 }
 
 void CalcExternalForces(const Model& model, const VectorXd& q, double load_factor, Workspace& ws) {

@@ -14,6 +14,13 @@ namespace ancfnet {
 /// clearance joints.
 void CalcInternalForces(const Model& model, const VectorXd& q, const VectorXd& v, Workspace& ws);
 
+/// For the midpoint rule, after CalcInternalForces at q_m = (q_start + q_end)/2: turns the cable
+/// elements' elastic forces into discrete gradients over the step, so that their work equals the
+/// change of the strain energy exactly (CalcCableStepForceCorrection; docs/theory.md,
+/// "Energy-consistent midpoint rule"). Adds to ws.internal_force.
+void AddStepForceCorrections(const Model& model, const VectorXd& q_start, const VectorXd& q_end,
+                             Workspace& ws);
+
 /// Fills ws.applied_force (point forces, point moments, distributed loads) and ws.external_force
 /// = applied + gravity, all scaled by the load factor λ (1 in dynamics).
 void CalcExternalForces(const Model& model, const VectorXd& q, double load_factor, Workspace& ws);

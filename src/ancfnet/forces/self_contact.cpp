@@ -7,6 +7,7 @@
 
 #include "ancfnet/assembly/system_matrix.hpp"
 #include "ancfnet/contact/distance/segment_segment.hpp"
+#include "ancfnet/contact/elastic_step_force.hpp"
 #include "ancfnet/forces/impact_speed.hpp"
 
 namespace ancfnet {
@@ -164,6 +165,7 @@ void SelfContact::FindCandidates(const State& state, double h) {
     const PairState pair = CalcPair(c, state.q, state.v, PairDetail::kGeometry);
     if (pair.gap > margin_[a] + margin_[b]) continue;
     c.direction_start = pair.direction;
+    c.penetration_start = Penetration(pair);
     const double closing = std::max(-pair.direction.dot(pair.velocity), 0.0);
     const auto it = std::lower_bound(history.begin(), history.end(), c,
                                      [](const SelfContactPairHistory& h, const Candidate& k) {
@@ -189,29 +191,67 @@ void SelfContact::FindCandidates(const State& state, double h) {
 }
 
 void SelfContact::AddForces(const VectorXd& q, const VectorXd& v, Workspace& ws) const {
+  for (const Candidate& c : candidates_) {
+    const PairState pair = step_end_ ? CalcStepPair(c, q, v, false, &ws.contact_energy)
+                                     : CalcPair(c, q, v, PairDetail::kForce);
+    if (!step_end_) {
+      if (!pair.force.touching) continue;
+      ws.contact_energy += pair.force.energy;
+    }
+    ApplyPairForce(c, pair, ws);
+  }
+}
+
+SelfContact::PairState SelfContact::CalcStepPair(const Candidate& c, const VectorXd& q,
+                                                 const VectorXd& v, bool jacobian,
+                                                 double* energy) const {
+  PairState pair = CalcPair(c, q, v, jacobian ? PairDetail::kJacobian : PairDetail::kForce);
+  const double start = c.penetration_start;
+  const double end = Penetration(CalcPair(c, *step_end_, v, PairDetail::kGeometry));
+  const NormalLaw& law = model_.contact().normal;
+  *energy += law.CalcElasticEnergy(end);
+  // The elastic part at the midpoint gives way to the discrete gradient (zero when apart at
+  // both ends), along d, the step's displacement of a's closest point relative to b's.
+  const Vector3d elastic = pair.force.force - pair.force.dissipative;
   std::array<double, 4> wa, wb;
   std::array<Index, 4> da, db;
-  for (const Candidate& c : candidates_) {
-    const PairState pair = CalcPair(c, q, v, PairDetail::kForce);
-    if (!pair.force.touching) continue;
-    ws.contact_energy += pair.force.energy;
-    const int na = Blocks(primitives_[c.a], pair.s, &wa, &da);
-    const int nb = Blocks(primitives_[c.b], pair.t, &wb, &db);
-    for (int k = 0; k < na; ++k) {
-      ws.internal_force.segment<3>(da[k]) -= wa[k] * pair.force.force;
-      ws.viscous_force.segment<3>(da[k]) -= wa[k] * pair.force.dissipative;
-    }
-    for (int k = 0; k < nb; ++k) {
-      ws.internal_force.segment<3>(db[k]) += wb[k] * pair.force.force;
-      ws.viscous_force.segment<3>(db[k]) += wb[k] * pair.force.dissipative;
-    }
+  const int na = Blocks(primitives_[c.a], pair.s, &wa, &da);
+  const int nb = Blocks(primitives_[c.b], pair.t, &wb, &db);
+  Vector3d d = Vector3d::Zero();
+  const VectorXd& q0 = *step_start_;
+  const VectorXd& q1 = *step_end_;
+  for (int k = 0; k < na; ++k) d += wa[k] * (q1.segment<3>(da[k]) - q0.segment<3>(da[k]));
+  for (int k = 0; k < nb; ++k) d -= wb[k] * (q1.segment<3>(db[k]) - q0.segment<3>(db[k]));
+  pair.force.force += CalcElasticStepForce(law, start, end, pair.direction, d) - elastic;
+  if (jacobian && pair.force.touching) {
+    const double slope = 2.0 * CalcElasticStepMagnitude(law, start, end).dforce_dend -
+                         law.Evaluate(pair.force.penetration, 0.0, 1.0).dforce_ddelta;
+    pair.force.dforce_dx -= slope * pair.direction * pair.direction.transpose();
+  }
+  return pair;
+}
+
+void SelfContact::ApplyPairForce(const Candidate& c, const PairState& pair, Workspace& ws) const {
+  std::array<double, 4> wa, wb;
+  std::array<Index, 4> da, db;
+  const int na = Blocks(primitives_[c.a], pair.s, &wa, &da);
+  const int nb = Blocks(primitives_[c.b], pair.t, &wb, &db);
+  for (int k = 0; k < na; ++k) {
+    ws.internal_force.segment<3>(da[k]) -= wa[k] * pair.force.force;
+    ws.viscous_force.segment<3>(da[k]) -= wa[k] * pair.force.dissipative;
+  }
+  for (int k = 0; k < nb; ++k) {
+    ws.internal_force.segment<3>(db[k]) += wb[k] * pair.force.force;
+    ws.viscous_force.segment<3>(db[k]) += wb[k] * pair.force.dissipative;
   }
 }
 
 void SelfContact::AddJacobian(const VectorXd& q, const VectorXd& v, const IterationWeights& weights,
                               SystemMatrix* matrix) const {
   for (const Candidate& c : candidates_) {
-    const PairState pair = CalcPair(c, q, v, PairDetail::kJacobian);
+    double energy = 0.0;
+    const PairState pair = step_end_ ? CalcStepPair(c, q, v, true, &energy)
+                                     : CalcPair(c, q, v, PairDetail::kJacobian);
     if (!pair.force.touching) continue;
     const Matrix24d jacobian = CalcSelfPairJacobian(pair.side_a, pair.side_b, pair.separation,
                                                     pair.force, weights.stiffness, weights.damping);

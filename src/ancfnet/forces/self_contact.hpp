@@ -7,6 +7,7 @@
 /// positions and slopes by Q = S(p)ᵀ f with S(p) the chord's interpolation of the shape functions
 /// (docs/theory.md, "Self-contact").
 
+#include <algorithm>
 #include <string>
 #include <utility>
 #include <vector>
@@ -47,8 +48,20 @@ class SelfContact {
   /// Number of candidate pairs.
   int num_candidates() const { return static_cast<int>(candidates_.size()); }
 
+  /// After FindCandidates at q_start: the step from there to *q_end (kept up to date by the
+  /// caller through the Newton iterations) whose midpoint forces AddForces is asked for. From
+  /// then on the elastic force of each candidate pair is the discrete gradient over the step
+  /// (CalcElasticStepForce) and ws.contact_energy is that at q_end, as in TargetContact::SetStep.
+  /// Both must outlive the calls; ClearStep ends it.
+  void SetStep(const VectorXd& q_start, const VectorXd* q_end) {
+    step_start_ = &q_start;
+    step_end_ = q_end;
+  }
+  void ClearStep() { step_end_ = nullptr; }
+
   /// ws.internal_force −= Qᵀ f, ws.viscous_force alike, ws.contact_energy += Σ ∫ F_el dδ over
-  /// the touching candidate pairs at (q, v).
+  /// the touching candidate pairs at (q, v). After SetStep, (q, v) is the step's midpoint and
+  /// the pairs touching at either end of the step count too.
   void AddForces(const VectorXd& q, const VectorXd& v, Workspace& ws) const;
   /// matrix += c_K ∂Q/∂q + c_C ∂Q/∂q̇ of the touching candidates, complete (CalcSelfPairJacobian:
   /// the closest points moving with the coordinates, friction's tangent plane turning): into the
@@ -86,6 +99,7 @@ class SelfContact {
     ContactPairHistory history;                    // at the start of the step
     Vector3d direction_start = Vector3d::UnitZ();  // closest-point direction at the step start
     bool coupled = false;                          // gap < g_c at the step start
+    double penetration_start = 0.0;                // Penetration() at the step start
   };
   // Axis ends of a primitive and their velocities.
   struct Axis {
@@ -111,6 +125,18 @@ class SelfContact {
   Axis Locate(const SelfContactPrimitive& p, const VectorXd& q, const VectorXd& v) const;
   PairState CalcPair(const Candidate& c, const VectorXd& q, const VectorXd& v,
                      PairDetail detail) const;
+  // A pair's penetration as its stored energy sees it: −gap, or at most 0 where a neighbour
+  // counts its closest points.
+  static double Penetration(const PairState& pair) {
+    return pair.counted ? -pair.gap : std::min(-pair.gap, 0.0);
+  }
+  // After SetStep: the pair's force at the midpoint (q, v) with its elastic part the discrete
+  // gradient over the step; its energy at the end of the step is added to *energy. With
+  // `jacobian`, the derivatives too (2 ∂F̄/∂δ₁ in place of the elastic slope).
+  PairState CalcStepPair(const Candidate& c, const VectorXd& q, const VectorXd& v, bool jacobian,
+                         double* energy) const;
+  // ws −= f on a's blocks and += f on b's, at the pair's closest points.
+  void ApplyPairForce(const Candidate& c, const PairState& pair, Workspace& ws) const;
   // Weights of a primitive's blocks at axis parameter s (4 for an element, 1 for a point mass)
   // and the blocks' first coordinates.
   int Blocks(const SelfContactPrimitive& p, double s, std::array<double, 4>* weight,
@@ -134,6 +160,8 @@ class SelfContact {
   double step_ = 0.0;  // h of FindCandidates
   std::vector<std::pair<Index, Index>> near_owners_;
   double near_factor_ = 1.0;
+  const VectorXd* step_start_ = nullptr;  // SetStep
+  const VectorXd* step_end_ = nullptr;
 };
 
 }  // namespace ancfnet

@@ -4,11 +4,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
+#include "ancfnet/contact/elastic_step_force.hpp"
 #include "ancfnet/forces/impact_speed.hpp"
 
 namespace ancfnet {
 namespace {
+
+// A pair's penetration where it is farther from its target than its probe's radius and the
+// exact value has not been needed.
+constexpr double kFar = std::numeric_limits<double>::infinity();
 
 // The generalised weights of the point c(t) = (1 − t) r(ξ₀) + t r(ξ₁) of a probe's axis.
 Vector4d CalcWeights(const ContactProbe& probe, double t) {
@@ -147,7 +153,9 @@ TargetContact::PairForce TargetContact::CalcPairForce(const Frame& frame, const 
   r.t = point.t;
   r.surface_point = point.x - (probe.radius - kinematics.penetration) * kinematics.normal;
   r.normal = kinematics.normal;
-  if (!with_jacobian || !r.touching) return r;
+  // The geometry also for a pair apart at the midpoint: after SetStep its elastic force acts
+  // while it touches at either end of the step.
+  if (!with_jacobian) return r;
   TargetPairGeometry& g = r.geometry;
   if (probe.element >= 0) {
     g.num_blocks = 4;
@@ -217,65 +225,224 @@ void TargetContact::ForEachTouchingPair(const VectorXd& q, const VectorXd& v,
   }
 }
 
+void TargetContact::SetStep(const VectorXd& q_start, const VectorXd& v_start,
+                            const VectorXd* q_end) {
+  step_start_ = &q_start;
+  step_start_velocity_ = &v_start;
+  step_end_ = q_end;
+  const auto& targets = model_.contact().targets;
+  start_penetration_.assign(probes_.size() * targets.size(), -kFar);
+  for (std::size_t t = 0; t < targets.size(); ++t)
+    frames_[t] = CalcFrame(targets[t], q_start, v_start);
+  for (std::size_t p = 0; p < probes_.size(); ++p) {
+    const Axis axis = Locate(probes_[p], q_start, v_start);
+    for (std::size_t t = 0; t < targets.size(); ++t) {
+      const std::size_t pair = p * targets.size() + t;
+      const std::optional<ProbePoint> point =
+          FindProbePointWithin(pair, targets[t], frames_[t], axis, probes_[p].radius);
+      if (point) start_penetration_[pair] = probes_[p].radius - point->distance.distance;
+    }
+  }
+}
+
 void TargetContact::AddForces(const VectorXd& q, const VectorXd& v,
                               const std::vector<ContactPairHistory>& history, Workspace& ws) const {
+  if (step_end_) {
+    AddStepForces(q, v, history, ws);
+    return;
+  }
   ws.contact_energy = 0.0;
   ForEachTouchingPair(q, v, history, false, [&](const ContactProbe& probe, const PairForce& f) {
     ws.contact_energy += f.energy;
-    if (probe.element < 0) {
-      const Index dof = model_.point_masses()[probe.point_mass].dof;
-      ws.internal_force.segment<3>(dof) -= f.force;
-      ws.viscous_force.segment<3>(dof) -= f.dissipative;
-    } else {
-      const CableElement& element = model_.elements()[probe.element];
-      const Vector4d w = CalcWeights(probe, f.t);
-      for (int k = 0; k < 4; ++k) {
-        const Index dof = element.dofs[3 * k];
-        ws.internal_force.segment<3>(dof) -= w[k] * f.force;
-        ws.viscous_force.segment<3>(dof) -= w[k] * f.dissipative;
-      }
-    }
-    const Frame& frame = frames_[f.target];
-    if (frame.body < 0) return;
-    // The body feels −f at the contact point: Q_body = Gᵀ (−f).
-    const RigidBody& body = model_.rigid_bodies()[frame.body];
-    const Matrix3x6d G = CalcPointVelocityMap(frame.pose, f.surface_point);
-    const Vector6d force = G.transpose() * f.force;
-    const Vector6d dissipative = G.transpose() * f.dissipative;
-    ws.internal_force.segment<3>(body.position_dof()) += force.head<3>();
-    ws.internal_force.segment<3>(body.rotation_dof()) += force.tail<3>();
-    ws.viscous_force.segment<3>(body.position_dof()) += dissipative.head<3>();
-    ws.viscous_force.segment<3>(body.rotation_dof()) += dissipative.tail<3>();
+    ApplyPairForce(probe, f, ws);
   });
+}
+
+void TargetContact::BeginStepEvaluation(const VectorXd& q, const VectorXd& v) const {
+  const auto& targets = model_.contact().targets;
+  end_frames_.resize(targets.size());
+  for (std::size_t t = 0; t < targets.size(); ++t) {
+    frames_[t] = CalcFrame(targets[t], q, v);
+    end_frames_[t] = CalcFrame(targets[t], *step_end_, v);
+  }
+}
+
+std::optional<TargetContact::PairForce> TargetContact::CalcStepPairForce(
+    std::size_t p, std::size_t t, const Axis& axis, const Axis& end_axis,
+    const ContactPairHistory& history, bool with_jacobian, double* energy) const {
+  const ContactTarget& target = model_.contact().targets[t];
+  const ContactProbe& probe = probes_[p];
+  const std::size_t pair = p * model_.contact().targets.size() + t;
+  const std::optional<ProbePoint> end =
+      FindProbePointWithin(pair, target, end_frames_[t], end_axis, probe.radius);
+  double end_depth = end ? probe.radius - end->distance.distance : -kFar;
+  double& start_depth = start_penetration_[pair];
+  if (!(end_depth > 0.0) && !(start_depth > 0.0)) {
+    // Apart at both ends: Φ does not change, no elastic force; the damping and friction of a
+    // pair touching at the midpoint only still act.
+    const std::optional<ProbePoint> mid =
+        FindProbePointWithin(pair, target, frames_[t], axis, probe.radius);
+    if (!mid) return std::nullopt;
+    PairForce f = CalcPairForce(frames_[t], probe, *mid, history, with_jacobian);
+    if (!f.touching) return std::nullopt;
+    f.target = static_cast<Index>(t);
+    f.force = f.dissipative;
+    // Nor its slope (∂δ/∂x = −nᵀ).
+    if (with_jacobian) f.dforce_dx += ElasticSlope(f.penetration) * f.normal * f.normal.transpose();
+    return f;
+  }
+  // One end beyond its probe's radius: its exact penetration, for F̄'s divided difference.
+  if (start_depth == -kFar) {
+    const Frame start = CalcFrame(target, *step_start_, *step_start_velocity_);
+    const Axis start_axis = Locate(probe, *step_start_, *step_start_velocity_);
+    start_depth = probe.radius - FindProbePoint(target, start, start_axis).distance.distance;
+  }
+  if (end_depth == -kFar)
+    end_depth =
+        probe.radius - FindProbePoint(target, end_frames_[t], end_axis).distance.distance;
+  const NormalLaw& law = model_.contact().normal;
+  *energy += law.CalcElasticEnergy(end_depth);
+  PairForce f = CalcPairForce(frames_[t], probe, FindProbePoint(target, frames_[t], axis),
+                              history, with_jacobian);
+  f.target = static_cast<Index>(t);
+  f.force = f.dissipative + CalcElasticStepForce(law, start_depth, end_depth, f.normal,
+                                                 CalcStepDisplacement(probe, f));
+  if (with_jacobian) {
+    // F̄ depends on the end of the step, which moves twice as far as the midpoint: the elastic
+    // slope at the midpoint gives way to 2 ∂F̄/∂δ₁ (∂δ/∂x = −nᵀ).
+    const double slope = 2.0 * CalcElasticStepMagnitude(law, start_depth, end_depth).dforce_dend -
+                         (f.touching ? ElasticSlope(f.penetration) : 0.0);
+    f.dforce_dx -= slope * f.normal * f.normal.transpose();
+  }
+  return f;
+}
+
+double TargetContact::ElasticSlope(double penetration) const {
+  return model_.contact().normal.Evaluate(penetration, 0.0, 1.0).dforce_ddelta;
+}
+
+void TargetContact::AddStepForces(const VectorXd& q, const VectorXd& v,
+                                  const std::vector<ContactPairHistory>& history,
+                                  Workspace& ws) const {
+  BeginStepEvaluation(q, v);
+  const std::size_t num_targets = model_.contact().targets.size();
+  ws.contact_energy = 0.0;
+  for (std::size_t p = 0; p < probes_.size(); ++p) {
+    const Axis axis = Locate(probes_[p], q, v);
+    const Axis end_axis = Locate(probes_[p], *step_end_, v);
+    for (std::size_t t = 0; t < num_targets; ++t) {
+      const std::optional<PairForce> f = CalcStepPairForce(
+          p, t, axis, end_axis, history[p * num_targets + t], false, &ws.contact_energy);
+      if (f) ApplyPairForce(probes_[p], *f, ws);
+    }
+  }
+}
+
+void TargetContact::AddStepJacobian(const VectorXd& q, const VectorXd& v,
+                                    const std::vector<ContactPairHistory>& history,
+                                    const IterationWeights& weights, SystemMatrix* matrix) const {
+  BeginStepEvaluation(q, v);
+  const std::size_t num_targets = model_.contact().targets.size();
+  double energy = 0.0;
+  for (std::size_t p = 0; p < probes_.size(); ++p) {
+    const Axis axis = Locate(probes_[p], q, v);
+    const Axis end_axis = Locate(probes_[p], *step_end_, v);
+    for (std::size_t t = 0; t < num_targets; ++t) {
+      const std::optional<PairForce> f = CalcStepPairForce(
+          p, t, axis, end_axis, history[p * num_targets + t], true, &energy);
+      if (f) AddPairJacobian(probes_[p], *f, weights, matrix);
+    }
+  }
+}
+
+Vector3d TargetContact::CalcStepDisplacement(const ContactProbe& probe, const PairForce& f) const {
+  const VectorXd& q0 = *step_start_;
+  const VectorXd& q1 = *step_end_;
+  Vector3d d = Vector3d::Zero();
+  if (probe.element < 0) {
+    const Index dof = model_.point_masses()[probe.point_mass].dof;
+    d = q1.segment<3>(dof) - q0.segment<3>(dof);
+  } else {
+    const CableElement& element = model_.elements()[probe.element];
+    const Vector4d w = CalcWeights(probe, f.t);
+    for (int k = 0; k < 4; ++k) {
+      const Index dof = element.dofs[3 * k];
+      d += w[k] * (q1.segment<3>(dof) - q0.segment<3>(dof));
+    }
+  }
+  const Frame& frame = frames_[f.target];
+  if (frame.body < 0) return d;
+  const RigidBody& body = model_.rigid_bodies()[frame.body];
+  Vector6d moved;
+  moved << q1.segment<3>(body.position_dof()) - q0.segment<3>(body.position_dof()),
+      q1.segment<3>(body.rotation_dof()) - q0.segment<3>(body.rotation_dof());
+  return d - CalcPointVelocityMap(frame.pose, f.surface_point) * moved;
+}
+
+void TargetContact::ApplyPairForce(const ContactProbe& probe, const PairForce& f,
+                                   Workspace& ws) const {
+  if (probe.element < 0) {
+    const Index dof = model_.point_masses()[probe.point_mass].dof;
+    ws.internal_force.segment<3>(dof) -= f.force;
+    ws.viscous_force.segment<3>(dof) -= f.dissipative;
+  } else {
+    const CableElement& element = model_.elements()[probe.element];
+    const Vector4d w = CalcWeights(probe, f.t);
+    for (int k = 0; k < 4; ++k) {
+      const Index dof = element.dofs[3 * k];
+      ws.internal_force.segment<3>(dof) -= w[k] * f.force;
+      ws.viscous_force.segment<3>(dof) -= w[k] * f.dissipative;
+    }
+  }
+  const Frame& frame = frames_[f.target];
+  if (frame.body < 0) return;
+  // The body feels −f at the contact point: Q_body = Gᵀ (−f).
+  const RigidBody& body = model_.rigid_bodies()[frame.body];
+  const Matrix3x6d G = CalcPointVelocityMap(frame.pose, f.surface_point);
+  const Vector6d force = G.transpose() * f.force;
+  const Vector6d dissipative = G.transpose() * f.dissipative;
+  ws.internal_force.segment<3>(body.position_dof()) += force.head<3>();
+  ws.internal_force.segment<3>(body.rotation_dof()) += force.tail<3>();
+  ws.viscous_force.segment<3>(body.position_dof()) += dissipative.head<3>();
+  ws.viscous_force.segment<3>(body.rotation_dof()) += dissipative.tail<3>();
 }
 
 void TargetContact::AddJacobian(const VectorXd& q, const VectorXd& v,
                                 const std::vector<ContactPairHistory>& history,
                                 const IterationWeights& weights, SystemMatrix* matrix) const {
+  if (step_end_) {
+    AddStepJacobian(q, v, history, weights, matrix);
+    return;
+  }
   ForEachTouchingPair(q, v, history, true, [&](const ContactProbe& probe, const PairForce& f) {
-    const Matrix18d jacobian =
-        CalcTargetPairJacobian(f.geometry, f, weights.stiffness, weights.damping);
-    if (probe.element < 0)
-      matrix->AddPointMassBlock(probe.point_mass, jacobian.topLeftCorner<3, 3>());
-    else
-      matrix->AddElementBlock(probe.element, jacobian.topLeftCorner<12, 12>());
-    const Frame& frame = frames_[f.target];
-    if (frame.body < 0) return;
-    for (int i = 0; i < 2; ++i)
-      for (int j = 0; j < 2; ++j)
-        matrix->AddBodyBlock(frame.body, i, j, jacobian.block<3, 3>(12 + 3 * i, 12 + 3 * j));
-    const int coupling =
-        matrix->FindContactCoupling(ProbeOwner(probe), matrix->BodyOwner(frame.body));
-    if (coupling < 0) return;
-    const int num_blocks = f.geometry.num_blocks;
-    for (int i = 0; i < num_blocks; ++i)
-      for (int j = 0; j < 2; ++j) {
-        matrix->AddContactBlock(coupling, i, num_blocks + j,
-                                jacobian.block<3, 3>(3 * i, 12 + 3 * j));
-        matrix->AddContactBlock(coupling, num_blocks + j, i,
-                                jacobian.block<3, 3>(12 + 3 * j, 3 * i));
-      }
+    AddPairJacobian(probe, f, weights, matrix);
   });
+}
+
+void TargetContact::AddPairJacobian(const ContactProbe& probe, const PairForce& f,
+                                    const IterationWeights& weights, SystemMatrix* matrix) const {
+  const Matrix18d jacobian =
+      CalcTargetPairJacobian(f.geometry, f, weights.stiffness, weights.damping);
+  if (probe.element < 0)
+    matrix->AddPointMassBlock(probe.point_mass, jacobian.topLeftCorner<3, 3>());
+  else
+    matrix->AddElementBlock(probe.element, jacobian.topLeftCorner<12, 12>());
+  const Frame& frame = frames_[f.target];
+  if (frame.body < 0) return;
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2; ++j)
+      matrix->AddBodyBlock(frame.body, i, j, jacobian.block<3, 3>(12 + 3 * i, 12 + 3 * j));
+  const int coupling =
+      matrix->FindContactCoupling(ProbeOwner(probe), matrix->BodyOwner(frame.body));
+  if (coupling < 0) return;
+  const int num_blocks = f.geometry.num_blocks;
+  for (int i = 0; i < num_blocks; ++i)
+    for (int j = 0; j < 2; ++j) {
+      matrix->AddContactBlock(coupling, i, num_blocks + j,
+                              jacobian.block<3, 3>(3 * i, 12 + 3 * j));
+      matrix->AddContactBlock(coupling, num_blocks + j, i,
+                              jacobian.block<3, 3>(12 + 3 * j, 3 * i));
+    }
 }
 
 void TargetContact::UpdateHistory(const VectorXd& q, const VectorXd& v,

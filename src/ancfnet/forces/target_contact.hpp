@@ -44,10 +44,20 @@ class TargetContact {
   void FindBodyCouplings(const VectorXd& q, const VectorXd& v, double h, const SystemMatrix& matrix,
                          std::vector<std::pair<Index, Index>>* owners) const;
 
+  /// The step from q_start to *q_end (which the caller keeps up to date through the Newton
+  /// iterations) whose midpoint forces AddForces is asked for: from now on it gives each pair's
+  /// elastic force as the discrete gradient over the step (CalcElasticStepForce), so that its
+  /// work equals the change of the contact energy exactly, and ws.contact_energy that at q_end.
+  /// Finds the pairs' penetrations at q_start. Both must outlive the calls; ClearStep ends it.
+  void SetStep(const VectorXd& q_start, const VectorXd& v_start, const VectorXd* q_end);
+  void ClearStep() { step_end_ = nullptr; }
+
   /// ws.internal_force −= Sᵀ f and ws.viscous_force −= Sᵀ f_dissipative for every touching pair
   /// (and += Gᵀ f on the body carrying the target, G its point-velocity map at the contact point),
   /// S = (1 − t*) S(ξ₀) + t* S(ξ₁) at the probe's point c(t*) deepest in the target;
   /// ws.contact_energy = Σ ∫ F_elastic dδ. `history` is each pair's at the start of the step.
+  /// After SetStep: (q, v) is the step's midpoint and the elastic part of f is the discrete
+  /// gradient between the step's ends, for every pair touching at either end or at (q, v).
   void AddForces(const VectorXd& q, const VectorXd& v,
                  const std::vector<ContactPairHistory>& history, Workspace& ws) const;
   /// matrix += c_K ∂Q/∂q + c_C ∂Q/∂q̇ of the contact forces, complete (CalcTargetPairJacobian:
@@ -138,6 +148,34 @@ class TargetContact {
   // Owner of a probe's blocks in SystemMatrix contact couplings.
   Index ProbeOwner(const ContactProbe& probe) const;
   Axis Locate(const ContactProbe& probe, const VectorXd& q, const VectorXd& v) const;
+  // Adds a pair's force to ws (probe and body), as AddForces describes.
+  void ApplyPairForce(const ContactProbe& probe, const PairForce& f, Workspace& ws) const;
+  // Adds a pair's Jacobian blocks to the matrix, as AddJacobian describes.
+  void AddPairJacobian(const ContactProbe& probe, const PairForce& f,
+                       const IterationWeights& weights, SystemMatrix* matrix) const;
+  // AddForces and AddJacobian after SetStep: midpoint forces with discrete-gradient elastic
+  // parts, and their derivatives.
+  void AddStepForces(const VectorXd& q, const VectorXd& v,
+                     const std::vector<ContactPairHistory>& history, Workspace& ws) const;
+  void AddStepJacobian(const VectorXd& q, const VectorXd& v,
+                       const std::vector<ContactPairHistory>& history,
+                       const IterationWeights& weights, SystemMatrix* matrix) const;
+  // The targets' frames at the midpoint (q, v) and at the end of the step.
+  void BeginStepEvaluation(const VectorXd& q, const VectorXd& v) const;
+  // After SetStep and BeginStepEvaluation: the force of pair (probe p, target t) at the
+  // midpoint, its elastic part the discrete gradient over the step; with_jacobian, its
+  // derivatives with 2 ∂F̄/∂δ₁ in place of the elastic slope at the midpoint (the end moves twice
+  // as far). Nothing when the pair touches at neither end nor at the midpoint. Adds Φ(δ₁) to
+  // *energy.
+  std::optional<PairForce> CalcStepPairForce(std::size_t p, std::size_t t, const Axis& axis,
+                                             const Axis& end_axis,
+                                             const ContactPairHistory& history,
+                                             bool with_jacobian, double* energy) const;
+  // ∂F/∂δ of the normal law's elastic part at penetration δ (N/m).
+  double ElasticSlope(double penetration) const;
+  // The displacement over the step of a pair's contact point relative to its target, as the
+  // forces at the midpoint see it: S Δy − G Δp (Q·Δq = f·d for the force f at that point).
+  Vector3d CalcStepDisplacement(const ContactProbe& probe, const PairForce& f) const;
   // Calls visit(probe, force) for every touching (probe, target) pair at (q, v); force.target is
   // the target's index.
   template <class Visit>
@@ -153,6 +191,13 @@ class TargetContact {
   // Per (probe, target) pair: where it was when its distance was last found, to skip the
   // distance queries of pairs that cannot touch (SegmentDistanceBound).
   mutable std::vector<SegmentDistanceBound> distance_bounds_;
+  // SetStep: the step's ends, and each pair's penetration at the start (−∞: farther than its
+  // probe's radius, found exactly when the pair touches at the end).
+  const VectorXd* step_start_ = nullptr;
+  const VectorXd* step_start_velocity_ = nullptr;
+  const VectorXd* step_end_ = nullptr;
+  mutable std::vector<double> start_penetration_;
+  mutable std::vector<Frame> end_frames_;
 };
 
 }  // namespace ancfnet

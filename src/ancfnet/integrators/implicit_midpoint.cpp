@@ -11,7 +11,7 @@ namespace ancfnet {
 class ImplicitMidpointIntegrator::StepProblem {
  public:
   StepProblem(ImplicitMidpointIntegrator& owner, double h, State& state)
-      : core_(owner.core_), mid_(owner.midpoint_), state_(state), h_(h) {}
+      : core_(owner.core_), mid_(owner.midpoint_), end_(owner.end_), state_(state), h_(h) {}
 
   Index size() const { return core_.dofs().num_unknowns(); }
 
@@ -38,6 +38,7 @@ class ImplicitMidpointIntegrator::StepProblem {
 
   // Ideal joints are refused (SolveDynamic): no multipliers.
   void CalcResidual(VectorXd* r) {
+    end_.noalias() = 2.0 * mid_.q - core_.previous().q;
     core_.CalcResidual(mid_.q, mid_.v, state_.a, state_.multipliers, 1.0, r);
   }
 
@@ -65,6 +66,7 @@ class ImplicitMidpointIntegrator::StepProblem {
  private:
   ImplicitStepCore& core_;
   State& mid_;
+  VectorXd& end_;
   State& state_;
   double h_ = 0.0;
 };
@@ -83,6 +85,8 @@ StepOutcome ImplicitMidpointIntegrator::Step(double h, State* state) {
   const bool rebuilt = core_.BeginStep(h, *state);
   StepProblem problem(*this, h, *state);
   problem.Reset();
+  end_ = state->q;
+  core_.SetStepEnd(&end_);
   const NewtonResult result = core_.Solve(problem);
   StepOutcome outcome{.accepted = result.converged,
                       .newton_iterations = result.iterations,
@@ -109,6 +113,7 @@ StepOutcome ImplicitMidpointIntegrator::Step(double h, State* state) {
   }
   // Forces at the converged midpoint, for the energy account (before the bodies' rotations are
   // rebased: ψ_{n+½} is relative to R_ref of t_n).
+  end_ = state->q;
   core_.CalcForces(midpoint_.q, midpoint_.v);
   core_.AcceptStep(state);
   return outcome;

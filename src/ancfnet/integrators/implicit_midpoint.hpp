@@ -6,7 +6,10 @@
 /// I.1.2 and IV.2). Second order, symplectic, without numerical damping; it keeps every
 /// quadratic invariant, so linear and angular momentum Σ q_i × (M q̇)_i are conserved to the
 /// Newton tolerance whenever the internal forces are invariant under rigid rotation
-/// (docs/theory.md, "Implicit midpoint rule").
+/// (docs/theory.md, "Implicit midpoint rule"). The contact forces' elastic parts are discrete
+/// gradients over the step (Gonzalez 1996), so that their work equals the change of the contact
+/// energy and the energy balance holds through impacts to the Newton tolerance
+/// (docs/theory.md, "Energy-consistent contact").
 
 #include "ancfnet/analysis/energy_tracker.hpp"
 #include "ancfnet/integrators/implicit_step_core.hpp"
@@ -35,6 +38,7 @@ class ImplicitMidpointIntegrator {
  private:
   ImplicitStepCore core_;
   State midpoint_;  // q_{n+½}, v_{n+½} at the current Newton iterate
+  VectorXd end_;    // q_{n+1} = 2 q_{n+½} − q_n at that iterate (ImplicitStepCore::SetStepEnd)
 };
 
 }  // namespace ancfnet

@@ -75,6 +75,12 @@ bool ImplicitStepCore::BeginStep(double h, const State& state) {
   return true;
 }
 
+void ImplicitStepCore::SetStepEnd(const VectorXd* q_end) {
+  step_end_ = q_end;
+  if (!contact_.empty()) contact_.SetStep(previous_.q, previous_.v, q_end);
+  if (!self_contact_.empty()) self_contact_.SetStep(previous_.q, q_end);
+}
+
 std::string ImplicitStepCore::CheckStep(const VectorXd& q, const VectorXd& v) const {
   if (!self_contact_.empty()) {
     std::string failure = self_contact_.CheckStep(q);
@@ -127,6 +133,7 @@ double ImplicitStepCore::ConstraintViolation(const VectorXd& q, const VectorXd& 
 
 void ImplicitStepCore::CalcForces(const VectorXd& q, const VectorXd& v) {
   CalcInternalForces(model_, q, v, ws_);
+  if (step_end_) AddStepForceCorrections(model_, previous_.q, *step_end_, ws_);
   damping_.AddForces(v, ws_);
   ws_.contact_energy = 0.0;
   if (!contact_.empty()) contact_.AddForces(q, v, previous_.contact_history, ws_);
@@ -138,9 +145,13 @@ void ImplicitStepCore::AcceptStep(State* state) {
   if (!contact_.empty()) {
     contact_.UpdateHistory(state->q, state->v, &state->contact_history);
     contact_.SetStepSize(0.0);  // ws() forces from now on: those of the accepted state
+    contact_.ClearStep();
   }
-  if (!self_contact_.empty())
+  step_end_ = nullptr;
+  if (!self_contact_.empty()) {
+    self_contact_.ClearStep();
     self_contact_.UpdateHistory(state->q, state->v, &state->self_contact_history);
+  }
   UpdateClearanceJointHistory(model_, state->q, state->v, state->body_rotation,
                               &state->joint_history);
   ws_.joint_history = state->joint_history;

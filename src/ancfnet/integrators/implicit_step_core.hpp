@@ -29,6 +29,11 @@ class ImplicitStepCore {
   /// contact couplings of the iteration matrix; true when that gave it a new pattern (which the
   /// linear solver then analyses anew).
   bool BeginStep(double h, const State& state);
+  /// For a scheme that evaluates the forces at the step's midpoint: from now until AcceptStep the
+  /// contact forces' elastic parts are discrete gradients between the saved state and *q_end,
+  /// which the integrator keeps at the end of the step it is solving for (TargetContact::SetStep;
+  /// docs/theory.md, "Energy-consistent contact"). Call after BeginStep.
+  void SetStepEnd(const VectorXd* q_end);
   /// Empty when a converged step to (q, v) may be accepted, else why not (self-contact search
   /// margin exceeded, threads passed through each other, a probe sank too far into a target;
   /// the last only while half the step is still above the time loop's smallest step, so that a
@@ -100,6 +105,7 @@ class ImplicitStepCore {
   double smallest_step_;  // DynamicSettings::smallest_step()
   State previous_;
   VectorXd residual_full_;
+  const VectorXd* step_end_ = nullptr;  // SetStepEnd
 };
 
 }  // namespace ancfnet

@@ -26,6 +26,8 @@ struct Workspace {
   // Per element, filled by CalcInternalForces / AssembleIterationMatrix.
   std::vector<Vector12d> element_force;
   std::vector<Vector12d> element_viscous_force;
+  /// AddStepForceCorrections: what turns element_force into the discrete gradient over a step.
+  std::vector<Vector12d> element_step_correction;
   std::vector<Matrix12d> element_stiffness;
   std::vector<Matrix12d> element_damping;
   // Per beam element, filled by CalcInternalForces / AssembleIterationMatrix; the entries of its

@@ -1,0 +1,22 @@
+#pragma once
+/// @file The cable's elastic force over a whole time step, for the midpoint rule: a discrete
+/// gradient of the strain energy, so that its work over the step equals U(e₁) − U(e₀) exactly
+/// (docs/theory.md, "Energy-consistent midpoint rule").
+
+#include "ancfnet/elements/ancf_cable.hpp"
+
+namespace ancfnet {
+
+/// ΔQ such that Q̄ = Q_el(e_m) + ΔQ, e_m = (e₀ + e₁)/2, does the work (e₁ − e₀)·Q̄ = U(e₁) − U(e₀)
+/// exactly, Q_el(e_m) the element's elastic force at the midpoint (its force less the
+/// Kelvin–Voigt part, CableForceOutputs). Axial: at each Gauss point the axial force at the
+/// midpoint strain becomes the divided difference N̄ = (W(ε₁) − W(ε₀))/(ε₁ − ε₀) of the energy
+/// density W (CalcCableAxialEnergyDensity); since ε is quadratic in e, ε₁ − ε₀ = (∂ε/∂e)(e_m)·Δe
+/// and the axial work is exact and the force stays objective, so momentum is kept (Simo & Tarnow
+/// 1992, eq. 25). Bending, whose exact curvature is not polynomial in e: what remains of the
+/// energy error, r, is added along Δe, ΔQ_b = r W Δe/(Δeᵀ W Δe) with W = diag(1, L²) on positions
+/// and slopes (Gonzalez 1996, eq. 12). Zero where e₁ = e₀.
+Vector12d CalcCableStepForceCorrection(const CableElementParameters& p, const Vector12d& e0,
+                                       const Vector12d& e1, const Vector12d& elastic_force);
+
+}  // namespace ancfnet

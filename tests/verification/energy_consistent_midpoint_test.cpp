@@ -1,0 +1,119 @@
+// The energy-consistent midpoint rule (docs/theory.md, "Energy-consistent midpoint rule"): with
+// the cable's elastic forces and the contact forces taken as discrete gradients over the step,
+// the balance T + U + V + D − W is constant to the Newton tolerance through impacts that a
+// 2 ms step does not resolve. Scenes: a stiff rod without any damping bouncing on a sphere (the
+// plain midpoint rule gained 3.6 % of its kinetic energy scale and then failed), a 4 × 4 net landing on a sphere with Carvalho–Martins
+// contact, tanh friction and Kelvin–Voigt threads, and two crossing threads in self-contact.
+// Each would fail with generalised-α (ρ∞ = 0.5 loses 16 % on the net).
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "ancfnet/integrators/dynamic_solver.hpp"
+#include "ancfnet/io/scene_loader.hpp"
+
+namespace ancfnet {
+namespace {
+
+struct BalanceRecord {
+  bool completed = false;
+  std::string message;
+  double scale = 0.0;      // largest kinetic energy (J)
+  double max_drift = 0.0;  // largest |B − B₀| (J)
+  double dissipated = 0.0;
+  int steps = 0;
+};
+
+BalanceRecord RunBalance(const std::string& text) {
+  const Scene scene = ParseScene(text);
+  State state = MakeInitialState(scene.model);
+  BalanceRecord r;
+  double balance0 = 0.0;
+  bool first = true;
+  const SolveResult result = SolveDynamic(
+      scene.model, scene.analysis.dynamics, 0.0,
+      [&](const State&, const EnergyAccount& e) {
+        if (first) balance0 = e.Balance();
+        first = false;
+        r.scale = std::max(r.scale, e.kinetic);
+        r.max_drift = std::max(r.max_drift, std::abs(e.Balance() - balance0));
+        r.dissipated = e.dissipated;
+      },
+      &state);
+  r.completed = result.completed;
+  r.message = result.message;
+  r.steps = result.statistics.steps;
+  return r;
+}
+
+std::string Midpoint(double end_time) {
+  return "analysis: {type: dynamic, integrator: midpoint, time_step: 2.0e-3, end_time: " +
+         std::to_string(end_time) + "}\n";
+}
+
+TEST(EnergyConsistentMidpoint, UndampedRodBouncingOnASphere) {
+  const BalanceRecord r = RunBalance(R"(gravity: [0, 0, -9.81]
+materials:
+  thread: {youngs_modulus: 1.0e9, density: 1000}
+sections:
+  thread: {shape: circle, diameter: 0.002}
+cables:
+  - {name: rod, start: [-0.1, 0.0, 0.35], end: [0.1, 0.05, 0.36], elements: 2, material: thread, section: thread}
+contact:
+  law: {type: hertz, stiffness: 1.0e6, exponent: 1.5}
+  points_per_element: 8
+  targets:
+    - {name: ball, type: sphere, center: [0, 0, 0], radius: 0.3}
+)" + Midpoint(0.4));
+  ASSERT_TRUE(r.completed) << r.message;
+  EXPECT_GT(r.scale, 2e-4);  // it fell 5 cm onto the sphere
+  EXPECT_LT(r.max_drift, 1e-3 * r.scale);  // measured 1.3·10⁻⁴ (the Newton tolerance)
+}
+
+TEST(EnergyConsistentMidpoint, NetLandingOnASphereWithFrictionAndDamping) {
+  const BalanceRecord r = RunBalance(R"(gravity: [0, 0, -9.81]
+materials:
+  thread: {youngs_modulus: 1.0e9, density: 1000, axial_damping_time: 1.0e-4}
+sections:
+  thread: {shape: circle, diameter: 0.002}
+nets:
+  - {name: net, type: square, side: 0.8, meshes: 4, center: [0, 0, 0.33], material: thread,
+     section: thread, knot_model: ideal, tension_only: false}
+contact:
+  law: {type: carvalho_martins, stiffness: 1.0e6, restitution: 0.3}
+  friction: {type: tanh, static: 0.3, kinetic: 0.3, regularization_speed: 1.0e-2}
+  points_per_element: 8
+  targets:
+    - {name: ball, type: sphere, center: [0, 0, 0], radius: 0.3}
+)" + Midpoint(0.25));
+  ASSERT_TRUE(r.completed) << r.message;
+  EXPECT_GT(r.dissipated, 0.05 * r.scale);  // contact, friction and threads do dissipate
+  EXPECT_LT(r.max_drift, 1e-4 * r.scale);
+}
+
+TEST(EnergyConsistentMidpoint, CrossingThreadsInSelfContact) {
+  // Two threads, one falling across the other, which lies on a plane; gravity pulls them together.
+  const BalanceRecord r = RunBalance(R"(gravity: [0, 0, -9.81]
+materials:
+  thread: {youngs_modulus: 1.0e8, density: 1000}
+sections:
+  thread: {shape: circle, diameter: 0.004}
+cables:
+  - {name: lower, start: [-0.2, 0, 0.002], end: [0.2, 0, 0.002], elements: 4, material: thread, section: thread}
+  - {name: upper, start: [0, -0.2, 0.02], end: [0, 0.2, 0.02], elements: 4, material: thread, section: thread}
+contact:
+  law: {type: hertz, stiffness: 1.0e6, exponent: 1.5}
+  self_contact: true
+  targets:
+    - {name: floor, type: plane, point: [0, 0, 0], normal: [0, 0, 1]}
+)" + Midpoint(0.15));
+  ASSERT_TRUE(r.completed) << r.message;
+  EXPECT_GT(r.scale, 1e-5);
+  EXPECT_LT(r.max_drift, 1e-4 * r.scale);
+}
+
+}  // namespace
+}  // namespace ancfnet
