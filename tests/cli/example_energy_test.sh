@@ -3,8 +3,7 @@
 # balance B = kinetic + strain + gravity + dissipated − work within 1 % of its energy scale (the
 # largest |kinetic| + |strain| + |gravity| + |work| + dissipated over the run) at every output.
 # Left out, with the reason (docs/validation.md, "Energy balance of the examples"): the capture
-# demo (net_capture, about a minute; its balance is in docs/benchmarks.md) and the S3 net drop
-# (net_drop_sphere, which loses 12 % to contact that its 2 ms step does not resolve);
+# demo (net_capture, about a minute; its balance is in docs/benchmarks.md);
 # cantilever_static and cantilever_modes are not dynamic.
 # Usage: bash tests/cli/example_energy_test.sh <ancfnet binary> <repo root>
 set -euo pipefail
@@ -15,7 +14,7 @@ work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 
 for example in pendulum cantilever_dynamic cantilever_decay journal_bearing lugre_incline \
-  spin_up tethered_target net_deploy slider_crank; do
+  spin_up tethered_target net_deploy slider_crank net_drop_sphere; do
   (cd "$root/examples" && "$ancfnet" run "$example.yaml" -o "$work/$example" -q) ||
     { echo "FAIL: $example: exit code $?" >&2; exit 1; }
   python3 - "$work/$example/probes.csv" "$example" <<'PY'
