@@ -2,8 +2,6 @@
 /// @file Template definitions of NewtonSolver (included by newton.hpp).
 
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 namespace ancfnet {
 
@@ -123,7 +121,6 @@ NewtonResult NewtonSolver::Iterate(Problem& problem, bool force_refresh, bool da
     // The energy test is taken with the scale at the corrected iterate.
     const bool small_energy =
         full_norm <= kRoundingNorm || energy <= settings_.energy_tolerance * problem.EnergyScale();
-    if (std::getenv("NEWTON_TRACE")) std::fprintf(stderr, "it %d refresh %d fresh %d norm %.3g energy %.3g scale %.3g step %.3g\n", it, (int)refresh, (int)jacobian_fresh_, full_norm, energy, problem.EnergyScale(), step);
     if (step == 1.0 && full_norm <= 1.0 && small_energy) {
       result.converged = true;
       last_iterations_ = result.iterations;
