@@ -48,26 +48,30 @@ Index TargetContact::ProbeOwner(const ContactProbe& probe) const {
 
 TargetContact::Axis TargetContact::Locate(const ContactProbe& probe, const VectorXd& q,
                                           const VectorXd& v) const {
+  Axis axis = LocatePositions(probe, q);
+  axis.v0 = Interpolate(probe, probe.shape0, v);
+  axis.v1 = probe.xi1 == probe.xi0 ? axis.v0 : Interpolate(probe, probe.shape1, v);
+  return axis;
+}
+
+TargetContact::Axis TargetContact::LocatePositions(const ContactProbe& probe,
+                                                   const VectorXd& q) const {
   Axis axis;
-  if (probe.element < 0) {
-    const Index dof = model_.point_masses()[probe.point_mass].dof;
-    axis.x0 = axis.x1 = q.segment<3>(dof);
-    axis.v0 = axis.v1 = v.segment<3>(dof);
-    return axis;
-  }
-  const CableElement& element = model_.elements()[probe.element];
-  axis.x0.setZero();
-  axis.x1.setZero();
+  axis.x0 = Interpolate(probe, probe.shape0, q);
+  // An inspection sphere's axis is a point.
+  axis.x1 = probe.xi1 == probe.xi0 ? axis.x0 : Interpolate(probe, probe.shape1, q);
   axis.v0.setZero();
   axis.v1.setZero();
-  for (int k = 0; k < 4; ++k) {
-    const Index dof = element.dofs[3 * k];
-    axis.x0 += probe.shape0[k] * q.segment<3>(dof);
-    axis.x1 += probe.shape1[k] * q.segment<3>(dof);
-    axis.v0 += probe.shape0[k] * v.segment<3>(dof);
-    axis.v1 += probe.shape1[k] * v.segment<3>(dof);
-  }
   return axis;
+}
+
+Vector3d TargetContact::Interpolate(const ContactProbe& probe, const Vector4d& shape,
+                                    const VectorXd& values) const {
+  if (probe.element < 0) return values.segment<3>(model_.point_masses()[probe.point_mass].dof);
+  const CableElement& element = model_.elements()[probe.element];
+  Vector3d x = Vector3d::Zero();
+  for (int k = 0; k < 4; ++k) x += shape[k] * values.segment<3>(element.dofs[3 * k]);
+  return x;
 }
 
 TargetContact::TargetAxis TargetContact::InTargetFrame(const Frame& frame, const Axis& axis) {
@@ -235,7 +239,7 @@ void TargetContact::SetStep(const VectorXd& q_start, const VectorXd& v_start,
   for (std::size_t t = 0; t < targets.size(); ++t)
     frames_[t] = CalcFrame(targets[t], q_start, v_start);
   for (std::size_t p = 0; p < probes_.size(); ++p) {
-    const Axis axis = Locate(probes_[p], q_start, v_start);
+    const Axis axis = LocatePositions(probes_[p], q_start);
     for (std::size_t t = 0; t < targets.size(); ++t) {
       const std::size_t pair = p * targets.size() + t;
       const std::optional<ProbePoint> point =
@@ -294,7 +298,7 @@ std::optional<TargetContact::PairForce> TargetContact::CalcStepPairForce(
   // One end beyond its probe's radius: its exact penetration, for F̄'s divided difference.
   if (start_depth == -kFar) {
     const Frame start = CalcFrame(target, *step_start_, *step_start_velocity_);
-    const Axis start_axis = Locate(probe, *step_start_, *step_start_velocity_);
+    const Axis start_axis = LocatePositions(probe, *step_start_);
     start_depth = probe.radius - FindProbePoint(target, start, start_axis).distance.distance;
   }
   if (end_depth == -kFar)
@@ -329,7 +333,7 @@ void TargetContact::AddStepForces(const VectorXd& q, const VectorXd& v,
   ws.contact_energy = 0.0;
   for (std::size_t p = 0; p < probes_.size(); ++p) {
     const Axis axis = Locate(probes_[p], q, v);
-    const Axis end_axis = Locate(probes_[p], *step_end_, v);
+    const Axis end_axis = LocatePositions(probes_[p], *step_end_);
     for (std::size_t t = 0; t < num_targets; ++t) {
       const std::optional<PairForce> f = CalcStepPairForce(
           p, t, axis, end_axis, history[p * num_targets + t], false, &ws.contact_energy);
@@ -346,7 +350,7 @@ void TargetContact::AddStepJacobian(const VectorXd& q, const VectorXd& v,
   double energy = 0.0;
   for (std::size_t p = 0; p < probes_.size(); ++p) {
     const Axis axis = Locate(probes_[p], q, v);
-    const Axis end_axis = Locate(probes_[p], *step_end_, v);
+    const Axis end_axis = LocatePositions(probes_[p], *step_end_);
     for (std::size_t t = 0; t < num_targets; ++t) {
       const std::optional<PairForce> f = CalcStepPairForce(
           p, t, axis, end_axis, history[p * num_targets + t], true, &energy);
@@ -479,14 +483,14 @@ std::string TargetContact::CheckStep(const VectorXd& q_start, const VectorXd& v_
     for (std::size_t p = 0; p < probes_.size(); ++p) {
       const ContactProbe& probe = probes_[p];
       const std::optional<ProbePoint> point = FindProbePointWithin(
-          p * targets.size() + t, targets[t], end, Locate(probe, q, v), probe.radius);
+          p * targets.size() + t, targets[t], end, LocatePositions(probe, q), probe.radius);
       if (!point) continue;
       const double depth = probe.radius - point->distance.distance;
       const double limit = fraction * probe.radius;
       if (!(depth > limit)) continue;
       const double depth_start =
           probe.radius -
-          FindProbePoint(targets[t], start, Locate(probe, q_start, v_start)).distance.distance;
+          FindProbePoint(targets[t], start, LocatePositions(probe, q_start)).distance.distance;
       if (depth - std::max(depth_start, 0.0) <= limit) continue;
       const std::string where =
           probe.element >= 0 ? fmt::format("element {} at ξ = {:.3f}", probe.element,

@@ -148,6 +148,11 @@ class TargetContact {
   // Owner of a probe's blocks in SystemMatrix contact couplings.
   Index ProbeOwner(const ContactProbe& probe) const;
   Axis Locate(const ContactProbe& probe, const VectorXd& q, const VectorXd& v) const;
+  // Locate without the velocities (left zero), for distances only.
+  Axis LocatePositions(const ContactProbe& probe, const VectorXd& q) const;
+  // Σ S_k values_k over the probe's blocks (its point mass's only block).
+  Vector3d Interpolate(const ContactProbe& probe, const Vector4d& shape,
+                       const VectorXd& values) const;
   // Adds a pair's force to ws (probe and body), as AddForces describes.
   void ApplyPairForce(const ContactProbe& probe, const PairForce& f, Workspace& ws) const;
   // Adds a pair's Jacobian blocks to the matrix, as AddJacobian describes.
