@@ -15,8 +15,10 @@ namespace ancfnet {
 /// and the axial work is exact and the force stays objective, so momentum is kept (Simo & Tarnow
 /// 1992, eq. 25). Bending, whose exact curvature is not polynomial in e: what remains of the
 /// energy error, r, is added along Δe, ΔQ_b = r W Δe/(Δeᵀ W Δe) with W = diag(1, L²) on positions
-/// and slopes (Gonzalez 1996, eq. 12). Zero where e₁ = e₀.
+/// and slopes (Gonzalez 1996, eq. 12). Zero where e₁ = e₀. With `jacobian`, also ∂ΔQ/∂e_m
+/// (e₁ = 2 e_m − e₀ moving with it) of the axial part, for the Newton iteration matrix.
 Vector12d CalcCableStepForceCorrection(const CableElementParameters& p, const Vector12d& e0,
-                                       const Vector12d& e1, const Vector12d& elastic_force);
+                                       const Vector12d& e1, const Vector12d& elastic_force,
+                                       Matrix12d* jacobian = nullptr);
 
 }  // namespace ancfnet

@@ -20,6 +20,11 @@ void CalcInternalForces(const Model& model, const VectorXd& q, const VectorXd& v
 /// "Energy-consistent midpoint rule"). Adds to ws.internal_force.
 void AddStepForceCorrections(const Model& model, const VectorXd& q_start, const VectorXd& q_end,
                              Workspace& ws);
+/// matrix += c_K ∂ΔQ/∂q_m of those corrections (their axial part; CalcCableStepForceCorrection),
+/// after AssembleIterationMatrix at the midpoint q_m, whose element forces it uses.
+void AddStepForceCorrectionJacobians(const Model& model, const VectorXd& q_start,
+                                     const VectorXd& q_end, double stiffness_weight,
+                                     Workspace& ws, SystemMatrix* matrix);
 
 /// Fills ws.applied_force (point forces, point moments, distributed loads) and ws.external_force
 /// = applied + gravity, all scaled by the load factor λ (1 in dynamics).

@@ -111,6 +111,9 @@ const SparseMatrixd& ImplicitStepCore::CalcIterationMatrix(const VectorXd& q, co
                                                            const VectorXd& multipliers,
                                                            const IterationWeights& weights) {
   AssembleIterationMatrix(model_, q, v, weights, 1.0, ws_, &iteration_matrix_);
+  if (step_end_)
+    AddStepForceCorrectionJacobians(model_, previous_.q, *step_end_, weights.stiffness, ws_,
+                                    &iteration_matrix_);
   damping_.AddRayleighJacobian(weights.damping, &iteration_matrix_);
   if (!contact_.empty())
     contact_.AddJacobian(q, v, previous_.contact_history, weights, &iteration_matrix_);

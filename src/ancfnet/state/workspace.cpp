@@ -11,6 +11,7 @@ Workspace::Workspace(const Model& model)
       element_force(model.elements().size()),
       element_viscous_force(model.elements().size()),
       element_step_correction(model.elements().size(), Vector12d::Zero()),
+      element_step_jacobian(model.elements().size(), Matrix12d::Zero()),
       element_stiffness(model.elements().size()),
       element_damping(model.elements().size()),
       beam_force(model.beam_elements().size()),

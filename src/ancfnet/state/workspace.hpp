@@ -28,6 +28,7 @@ struct Workspace {
   std::vector<Vector12d> element_viscous_force;
   /// AddStepForceCorrections: what turns element_force into the discrete gradient over a step.
   std::vector<Vector12d> element_step_correction;
+  std::vector<Matrix12d> element_step_jacobian;  ///< its ∂/∂q_m (AddStepForceCorrectionJacobians)
   std::vector<Matrix12d> element_stiffness;
   std::vector<Matrix12d> element_damping;
   // Per beam element, filled by CalcInternalForces / AssembleIterationMatrix; the entries of its

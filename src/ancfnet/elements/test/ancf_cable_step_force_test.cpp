@@ -62,6 +62,34 @@ TEST(CableStepForce, AxialCorrectionHasNoNetForce) {
   EXPECT_LT(net.norm(), 1e-12 * correction.norm());
 }
 
+// ∂ΔQ/∂e_m (e₁ = 2 e_m − e₀) against central differences, for the linear and the smooth rope
+// law (simple bending: the correction is all axial).
+TEST(CableStepForce, JacobianMatchesFiniteDifferences) {
+  CableElementParameters p = test::MakeCableTestParameters();
+  p.bending_model = BendingModel::kSecondDerivative;
+  for (bool rope : {false, true}) {
+    p.tension_only = rope;
+    p.rope_smoothing_strain = rope ? 0.01 : 0.0;
+    const Vector12d e0 = Start();
+    const Vector12d em = 0.5 * (Start() + End());
+    const auto correction = [&](const Vector12d& mid) {
+      return CalcCableStepForceCorrection(p, e0, 2.0 * mid - e0, ElasticForce(p, mid));
+    };
+    Matrix12d jacobian;
+    CalcCableStepForceCorrection(p, e0, 2.0 * em - e0, ElasticForce(p, em), &jacobian);
+    Matrix12d numeric;
+    const double h = 1e-6;
+    for (int j = 0; j < 12; ++j) {
+      Vector12d plus = em, minus = em;
+      plus[j] += h;
+      minus[j] -= h;
+      numeric.col(j) = (correction(plus) - correction(minus)) / (2.0 * h);
+    }
+    EXPECT_GT(jacobian.norm(), 1e-3 * p.axial_stiffness);
+    EXPECT_LT((jacobian - numeric).norm(), 1e-6 * jacobian.norm()) << "rope " << rope;
+  }
+}
+
 TEST(CableStepForce, VanishesForAStepThatDoesNotMove) {
   const CableElementParameters p = test::MakeCableTestParameters();
   const Vector12d force = ElasticForce(p, Start());
