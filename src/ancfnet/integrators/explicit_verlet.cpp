@@ -34,16 +34,20 @@ ExplicitVerletIntegrator::ExplicitVerletIntegrator(const Model& model)
 }
 
 bool ExplicitVerletIntegrator::Initialize(State* state) {
-  ws_.link_broken = state->link_broken;
-  ws_.body_rotation = state->body_rotation;
-  ws_.joint_history = state->joint_history;
-  contact_history_ = state->contact_history;
-  SystemMatrix mass(model_, dofs_);
-  AssembleMassMatrix(model_, ws_, &mass);
-  if (!mass_solver_.Factorize(mass.matrix())) return false;
+  if (!Prepare(*state)) return false;
   if (!self_contact_.empty()) self_contact_.FindCandidates(*state, 0.0);
   CalcAcceleration(state->q, state->v, &state->a);
   return true;
+}
+
+bool ExplicitVerletIntegrator::Prepare(const State& state) {
+  ws_.link_broken = state.link_broken;
+  ws_.body_rotation = state.body_rotation;
+  ws_.joint_history = state.joint_history;
+  contact_history_ = state.contact_history;
+  SystemMatrix mass(model_, dofs_);
+  AssembleMassMatrix(model_, ws_, &mass);
+  return mass_solver_.Factorize(mass.matrix());
 }
 
 void ExplicitVerletIntegrator::CalcAcceleration(const VectorXd& q, const VectorXd& v, VectorXd* a) {

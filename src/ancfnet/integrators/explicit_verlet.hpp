@@ -3,6 +3,7 @@
 /// once; for comparison with generalised-α. Conditionally stable: h < 2/ω_max.
 
 #include "ancfnet/analysis/energy_tracker.hpp"
+#include "ancfnet/common/binary_archive.hpp"
 #include "ancfnet/forces/forces.hpp"
 #include "ancfnet/forces/self_contact.hpp"
 #include "ancfnet/forces/target_contact.hpp"
@@ -22,6 +23,11 @@ class ExplicitVerletIntegrator {
   /// Factorises the mass matrix and sets a₀ = M⁻¹ (Q_ext − Q_int) with the state's broken links.
   /// False if M is singular.
   bool Initialize(State* state);
+  /// Nothing beyond the state is carried from step to step.
+  void SaveCheckpoint(ArchiveWriter*) const {}
+  /// Continues from `state` (instead of Initialize): the mass matrix factorised, the state's
+  /// acceleration kept. False if M is singular.
+  bool Resume(const State& state, ArchiveReader*) { return Prepare(state); }
   /// v_{n+½} = v_n + h/2 a_n; q_{n+1} = q_n + h v_{n+½};
   /// a_{n+1} = M⁻¹ (Q_ext − Q_int)(q_{n+1}, v_{n+½}); v_{n+1} = v_{n+½} + h/2 a_{n+1}
   /// (Hairer, Lubich & Wanner 2006, I.1.4; velocity-dependent forces use v_{n+½}).
@@ -35,6 +41,8 @@ class ExplicitVerletIntegrator {
   double EstimateCriticalStep(const VectorXd& q) const;
 
  private:
+  // Takes over the state's broken links, body rotations and histories and factorises M.
+  bool Prepare(const State& state);
   void CalcAcceleration(const VectorXd& q, const VectorXd& v, VectorXd* a);
 
   const Model& model_;

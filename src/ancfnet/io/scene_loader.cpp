@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "ancfnet/common/error.hpp"
+#include "ancfnet/common/fnv_hash.hpp"
 #include "ancfnet/io/beam_reader.hpp"
 #include "ancfnet/io/clearance_joint_reader.hpp"
 #include "ancfnet/io/ideal_joint_reader.hpp"
@@ -458,7 +459,9 @@ Scene ParseScene(const std::string& yaml_text, const std::string& source_name,
     ThrowYamlError(source_name, error);
   }
   try {
-    return ReadScene(YamlValue::Root(root, source_name), scene_directory);
+    Scene scene = ReadScene(YamlValue::Root(root, source_name), scene_directory);
+    scene.text_hash = Fnv1aHash(yaml_text.data(), yaml_text.size());
+    return scene;
   } catch (const YAML::Exception& error) {  // a node access the reader did not foresee
     ThrowYamlError(source_name, error);
   }
