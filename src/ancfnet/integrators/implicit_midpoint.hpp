@@ -28,6 +28,7 @@ class ImplicitMidpointIntegrator {
   /// throws InputError when `in` does not fit.
   bool Resume(const State& state, ArchiveReader* in) {
     core_.Resume(state, in);
+    midpoint_ = state;
     return true;
   }
   /// Advances `state` by h; state->a becomes the step's mean acceleration (v_{n+1} − v_n)/h.
