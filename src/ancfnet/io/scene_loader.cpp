@@ -25,6 +25,7 @@
 #include "ancfnet/io/rigid_body_reader.hpp"
 #include "ancfnet/io/scene_library.hpp"
 #include "ancfnet/io/scene_settings_reader.hpp"
+#include "ancfnet/io/slender_elements.hpp"
 #include "ancfnet/io/unique_names.hpp"
 #include "ancfnet/io/yaml_reader.hpp"
 #include "ancfnet/model/model_builder.hpp"
@@ -185,6 +186,8 @@ void ReadCable(const YamlValue& item, const Library& library, ModelBuilder* buil
       Lookup(library.materials, map.Get("material"), "material", "known materials");
   const Section& section =
       Lookup(library.sections, map.Get("section"), "section", "known sections");
+  CheckSlenderElements(section, (spec.end - spec.start).norm() / spec.num_elements,
+                       fmt::format("cable '{}'", spec.name), map.Get("section"));
   CableProperties& properties = spec.properties;
   properties = MakeCableProperties(material, section);
   if (auto v = map.Find("tension_only")) properties.tension_only = v->AsBool();
@@ -361,7 +364,8 @@ std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
   return probes;
 }
 
-Scene ReadScene(const YamlValue& root, const std::filesystem::path& scene_directory) {
+Scene ReadScene(const YamlValue& root, const std::filesystem::path& scene_directory,
+                const LoadOptions& options) {
   if (root.node().IsNull())
     root.FailPlain("the scene is empty (expected a map with materials, sections and cables)");
   const YamlMap scene = root.AsMap();
@@ -425,6 +429,9 @@ Scene ReadScene(const YamlValue& root, const std::filesystem::path& scene_direct
   if (auto v = scene.Find("contact")) ReadContact(*v, scene_directory, &builder);
 
   result.model = root.Locate([&] { return builder.Build(); });
+  if (auto v = scene.Find("analysis");
+      v && options.max_unknown_steps > 0.0 && result.analysis.type == AnalysisType::kDynamic)
+    CheckRunWork(result.analysis.dynamics, result.model.num_dofs(), options.max_unknown_steps, *v);
   if (auto v = scene.Find("probes")) result.probes = ReadProbes(*v, result.model, point_masses);
   if (auto v = scene.Find("output")) result.output = ReadOutputSettings(*v);
   result.source = root.source();
@@ -443,7 +450,7 @@ Scene ReadScene(const YamlValue& root, const std::filesystem::path& scene_direct
 constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t{64} << 20;
 
 Scene ParseScene(const std::string& yaml_text, const std::string& source_name,
-                 const std::filesystem::path& scene_directory) {
+                 const std::filesystem::path& scene_directory, const LoadOptions& options) {
   YAML::Node root;
   try {
     const std::vector<YAML::Node> documents = YAML::LoadAll(yaml_text);
@@ -459,7 +466,7 @@ Scene ParseScene(const std::string& yaml_text, const std::string& source_name,
     ThrowYamlError(source_name, error);
   }
   try {
-    Scene scene = ReadScene(YamlValue::Root(root, source_name), scene_directory);
+    Scene scene = ReadScene(YamlValue::Root(root, source_name), scene_directory, options);
     scene.text_hash = Fnv1aHash(yaml_text.data(), yaml_text.size());
     return scene;
   } catch (const YAML::Exception& error) {  // a node access the reader did not foresee
@@ -467,7 +474,7 @@ Scene ParseScene(const std::string& yaml_text, const std::string& source_name,
   }
 }
 
-Scene LoadScene(const std::filesystem::path& file) {
+Scene LoadScene(const std::filesystem::path& file, const LoadOptions& options) {
   std::error_code error;
   std::ifstream in(file, std::ios::binary);
   if (!in || std::filesystem::is_directory(file, error))
@@ -482,7 +489,7 @@ Scene LoadScene(const std::filesystem::path& file) {
                                  size, kMaxSceneFileBytes >> 20));
   std::ostringstream text;
   text << in.rdbuf();
-  return ParseScene(text.str(), file.string(), file.parent_path());
+  return ParseScene(text.str(), file.string(), file.parent_path(), options);
 }
 
 }  // namespace ancfnet

@@ -94,6 +94,28 @@ TEST(HostileInput, AStepCountNoRunCouldFinishIsRefused) {
   EXPECT_EQ(ErrorOf(Cantilever("  type: static\n", "  type: dynamic\n  time_step: 1.0e-9\n")), "");
 }
 
+TEST(HostileInput, AnEstimatedWorkBeyondTheLimitAsksForForce) {
+  // 10⁹ steps of the cantilever's 102 coordinates; the CLI's limit is kMaxUnknownSteps.
+  const std::string scene =
+      Cantilever("  type: static\n", "  type: dynamic\n  time_step: 1.0e-7\n  end_time: 100\n");
+  const auto error_with_limit = [&](double limit) -> std::string {
+    try {
+      ParseScene(scene, "scene.yaml", {}, {.max_unknown_steps = limit});
+    } catch (const InputError& error) {
+      return error.what();
+    }
+    return "";
+  };
+  EXPECT_EQ(error_with_limit(1e11),
+            "scene.yaml:21:14: 1e+09 steps (end_time 100 s / time_step 1e-07 s) of 102 unknowns "
+            "are 1.02e+11 unknown-steps, above the limit of 1e+11 (10¹² take months on one core); "
+            "check time_step and end_time, or run it anyway with --force (key 'time_step')");
+  EXPECT_EQ(error_with_limit(1.1e11), "");
+  EXPECT_EQ(error_with_limit(0.0), "");  // --force
+  EXPECT_EQ(ErrorOf(scene), "");         // no limit unless asked
+  EXPECT_EQ(kMaxUnknownSteps, 1e12);
+}
+
 TEST(HostileInput, FilesThatAreNotScenesAreRefusedBeforeReading) {
   auto error_of_file = [](const std::filesystem::path& file) -> std::string {
     try {
@@ -124,6 +146,17 @@ probes:
             "scene.yaml:18:50: expected a number in [1, 3], got '100' (key 'exponent')");
   EXPECT_EQ(ErrorOf(WithNet("mesh_size: 2.0, center: [0, 0, 1]")),
             "scene.yaml:18:53: a mesh of 2 m does not fit in a net of side 1 m (key 'mesh_size')");
+  // A section thicker than the elements are long (a 1000 km thread on a 1 m cable).
+  EXPECT_EQ(ErrorOf(Cantilever("bar: {shape: rectangle, width: 0.01, height: 0.01}",
+                               "bar: {shape: circle, diameter: 1.0e6}")),
+            "scene.yaml:11:14: a section 1e+06 m thick (the diameter of its area) is thicker than "
+            "the 0.0625 m elements of cable 'beam' are long; cable elements must be slender: "
+            "check the unit of the section, or use fewer elements (key 'section')");
+  EXPECT_EQ(ErrorOf(WithNet("meshes: 100, center: [0, 0, 1]")),
+            "scene.yaml:19:15: a section 0.0113 m thick (the diameter of its area) is thicker than "
+            "the 0.01 m elements of the threads of net 'net' are long; cable elements must be "
+            "slender: check the unit of the section, or use fewer elements (key 'section')");
+  EXPECT_EQ(ErrorOf(WithNet("meshes: 80, center: [0, 0, 1]")), "");
   // Axes that are not orthonormal: the message names the net, not its side.
   EXPECT_EQ(ErrorOf(WithNet("meshes: 2, axis_u: [1, 1, 0]")),
             "scene.yaml:18:5: net axes u = [1, 1, 0] and v = [0, 1, 0] must be unit vectors "
