@@ -19,6 +19,7 @@
 #include "ancfnet/io/ideal_joint_reader.hpp"
 #include "ancfnet/io/closest_name.hpp"
 #include "ancfnet/io/connection_law_reader.hpp"
+#include "ancfnet/io/contact_period_check.hpp"
 #include "ancfnet/io/contact_reader.hpp"
 #include "ancfnet/io/damping_reader.hpp"
 #include "ancfnet/io/net_reader.hpp"
@@ -429,6 +430,10 @@ Scene ReadScene(const YamlValue& root, const std::filesystem::path& scene_direct
   if (auto v = scene.Find("contact")) ReadContact(*v, scene_directory, &builder);
 
   result.model = root.Locate([&] { return builder.Build(); });
+  if (auto v = scene.Find("contact");
+      v && result.analysis.type == AnalysisType::kDynamic && v->AsMap().Find("law"))
+    if (auto k = v->AsMap().Get("law").AsMap().Find("stiffness"))
+      CheckContactPeriod(result.model, result.analysis.dynamics.time_step, *k);
   if (auto v = scene.Find("analysis");
       v && options.max_unknown_steps > 0.0 && result.analysis.type == AnalysisType::kDynamic)
     CheckRunWork(result.analysis.dynamics, result.model.num_dofs(), options.max_unknown_steps, *v);

@@ -157,6 +157,23 @@ probes:
             "the 0.01 m elements of the threads of net 'net' are long; cable elements must be "
             "slender: check the unit of the section, or use fewer elements (key 'section')");
   EXPECT_EQ(ErrorOf(WithNet("meshes: 80, center: [0, 0, 1]")), "");
+  // A contact law so stiff that a contact lasts less than 1/1000 of a step.
+  const auto with_stiffness = [](const std::string& stiffness) {
+    return test::Replace(
+        Cantilever("probes:\n", "contact:\n  law: {type: hertz, stiffness: " + stiffness +
+                                     "}\n  targets:\n    - {name: ball, type: sphere, center: "
+                                     "[0, 0, -1], radius: 0.1}\nprobes:\n"),
+        "  type: static\n", "  type: dynamic\n  time_step: 1.0e-3\n");
+  };
+  const std::string stiff = ErrorOf(with_stiffness("1.0e30"));
+  EXPECT_EQ(stiff.rfind("scene.yaml:18:33: a contact of the lightest contact point (0.00696 kg) "
+                        "would last 2π √(m/k) = 2.86e-15 s, less than 1/1000 of the time step "
+                        "0.001 s: no step could resolve it; check the stiffness and its unit "
+                        "(N/m^1.5) (key 'stiffness')",
+                        0),
+            0u)
+      << stiff;
+  EXPECT_EQ(ErrorOf(with_stiffness("1.0e9")), "");
   // Axes that are not orthonormal: the message names the net, not its side.
   EXPECT_EQ(ErrorOf(WithNet("meshes: 2, axis_u: [1, 1, 0]")),
             "scene.yaml:18:5: net axes u = [1, 1, 0] and v = [0, 1, 0] must be unit vectors "
