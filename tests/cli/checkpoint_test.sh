@@ -47,7 +47,8 @@ expect_refusal() {
   shift 2
   "$@" -q 2>"$work/stderr" >/dev/null || status=$?
   [[ $status -eq 2 ]] || fail "$what: exit code $status, expected 2: $(cat "$work/stderr")"
-  grep -q -- "$pattern" "$work/stderr" || fail "$what: message lacks '$pattern': $(cat "$work/stderr")"
+  grep -q -- "$pattern" "$work/stderr" ||
+    fail "$what: message lacks '$pattern': $(cat "$work/stderr")"
 }
 
 pendulum="$root/examples/pendulum.yaml"
@@ -78,7 +79,8 @@ kill -s INT "$pid" 2>/dev/null || fail "net: the run ended before the signal"
 status=0
 wait "$pid" || status=$?
 [[ $status -eq 130 ]] || fail "net: exit code $status after SIGINT, expected 130"
-grep -q -- "--restart" "$work/stderr_int" || fail "net: no hint how to continue: $(cat "$work/stderr_int")"
+grep -q -- "--restart" "$work/stderr_int" ||
+  fail "net: no hint how to continue: $(cat "$work/stderr_int")"
 [[ -f "$work/net_stopped/checkpoint.bin" ]] || fail "net: no checkpoint after SIGINT"
 "$ancfnet" run "$net" -o "$work/net_stopped" -q --restart "$work/net_stopped/checkpoint.bin" ||
   fail "net restart: exit code $?"

@@ -207,12 +207,13 @@ void SystemMatrix::SaveContactCouplings(ArchiveWriter* out) const {
 void SystemMatrix::LoadContactCouplings(ArchiveReader* in) {
   num_updates_ = in->Read<long>();
   const Index num_owners = BodyOwner(num_bodies_);
-  in->ReadSequence(&couplings_, 3 * sizeof(std::int64_t), [&](ArchiveReader& r, ContactCoupling* c) {
+  const auto read = [&](ArchiveReader& r, ContactCoupling* c) {
     c->a = static_cast<Index>(r.Read<std::int64_t>());
     c->b = static_cast<Index>(r.Read<std::int64_t>());
     c->last_near = r.Read<long>();
     if (c->a < 0 || c->a > c->b || c->b >= num_owners) r.Fail("a contact coupling of no owner");
-  });
+  };
+  in->ReadSequence(&couplings_, 3 * sizeof(std::int64_t), read);
   IndexContactCouplings();
   Rebuild();
 }

@@ -151,8 +151,8 @@ SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings, dou
       at.step = std::min(2.0 * at.step, nominal);
       at.accepted_in_a_row = 0;
     }
-    const bool at_output =
-        output_interval <= 0.0 || state->t >= at.next_output - time_eps || state->t >= end - time_eps;
+    const bool at_output = output_interval <= 0.0 || state->t >= at.next_output - time_eps ||
+                           state->t >= end - time_eps;
     if (at_output) {
       if (!EmitOutput(output, *state, energy.account(), &result)) return result;
       if (output_interval > 0.0)

@@ -27,7 +27,8 @@ void CheckContactPeriod(const Model& model, double time_step, const YamlValue& s
     } else {
       mass = model.point_masses()[probe.point_mass].mass;
     }
-    const double k = law.exponent * law.stiffness * std::pow(0.1 * probe.radius, law.exponent - 1.0);
+    const double depth = 0.1 * probe.radius;
+    const double k = law.exponent * law.stiffness * std::pow(depth, law.exponent - 1.0);
     if (!(mass > 0.0 && k > 0.0)) continue;
     const double period = 2.0 * std::numbers::pi * std::sqrt(mass / k);
     if (period < shortest) {

@@ -81,7 +81,8 @@ class KluFactorization {
     const int n = static_cast<int>(outer_.size()) - 1;
     symbolic_ = klu_analyze(n, outer_.data(), inner_.data(), &common_);
     if (symbolic_)
-      numeric_ = klu_factor(outer_.data(), inner_.data(), pivot_values_.data(), symbolic_, &common_);
+      numeric_ =
+          klu_factor(outer_.data(), inner_.data(), pivot_values_.data(), symbolic_, &common_);
     if (numeric_ && refactored_ &&
         !klu_refactor(outer_.data(), inner_.data(), values_.data(), symbolic_, numeric_, &common_))
       klu_free_numeric(&numeric_, &common_);

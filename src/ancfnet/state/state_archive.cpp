@@ -28,7 +28,8 @@ void LoadSizedSequence(ArchiveReader* in, std::vector<Item>* items, std::size_t 
   if (items->size() != size) in->Fail("a state list of the wrong length for this scene");
 }
 
-constexpr std::size_t kHistoryBytes = sizeof(double) * 6;  // speed, then the bristle's 2 sizes, 3 values
+// A pair history's bytes: its speed, then its bristle's two sizes and three values.
+constexpr std::size_t kHistoryBytes = sizeof(double) * 6;
 
 }  // namespace
 

@@ -75,9 +75,10 @@ TEST(ExplicitVerletTest, StableJustBelowTheLimitAndUnstableJustAbove) {
   EXPECT_GT(MaxSpeedAfterSteps(model, 1.02 * exact, 3000), 1.0);
 }
 
-// A step above the limit (2.5 × the estimate, which is at least half the true limit) diverges after many accepted steps whose states grow wild; the message
-// quotes the estimate made at the start (once 1e-104 s, made at the last wild state) and says that
-// h is above it; a step below the limit that still diverges is not blamed on h.
+// A step above the limit (2.5 × the estimate, which is at least half the true limit) diverges
+// after many accepted steps whose states grow wild; the message quotes the estimate made at the
+// start (once 1e-104 s, made at the last wild state) and says that h is above it; a step below
+// the limit that still diverges is not blamed on h.
 TEST(ExplicitVerletTest, ADivergedStepQuotesTheEstimateOfTheStart) {
   const Model model = MakeUnloadedCantilever();
   const double estimate =
