@@ -27,7 +27,6 @@ struct LoopPosition {
   long output_count = 1;       // the next output is at t₀ + output_count Δ ...
   double next_output = 0.0;    // ... this time
   int accepted_in_a_row = 0;
-  long checkpoint_count = 1;   // the next checkpoint is at t₀ + checkpoint_count · every
 
   void Save(ArchiveWriter* out) const {
     out->Write(start);
@@ -35,7 +34,6 @@ struct LoopPosition {
     out->Write(output_count);
     out->Write(next_output);
     out->Write(accepted_in_a_row);
-    out->Write(checkpoint_count);
   }
   void Load(ArchiveReader* in) {
     start = in->Read<double>();
@@ -43,7 +41,6 @@ struct LoopPosition {
     output_count = in->Read<long>();
     next_output = in->Read<double>();
     accepted_in_a_row = in->Read<int>();
-    checkpoint_count = in->Read<long>();
   }
 };
 
@@ -86,6 +83,12 @@ SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings, dou
   const double min_step = settings.smallest_step();
   const double end = settings.end_time;
   const double time_eps = 1e-9 * nominal;
+  // The next checkpoint is at t₀ + k · every: the first after the state (a continued run may
+  // take them at another interval than the run it continues).
+  long checkpoint_count =
+      checkpoints.every > 0.0
+          ? static_cast<long>(std::floor((state->t - at.start + time_eps) / checkpoints.every)) + 1
+          : 0;
   const auto write_checkpoint = [&] {
     ArchiveWriter out;
     SaveState(*state, &out);
@@ -163,10 +166,10 @@ SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings, dou
       // The checkpoint of an interrupt is taken before its extra output, which a continued run
       // must not repeat.
       const auto checkpoint_time = [&] {
-        return at.start + static_cast<double>(at.checkpoint_count) * checkpoints.every;
+        return at.start + static_cast<double>(checkpoint_count) * checkpoints.every;
       };
       const bool due = state->t >= checkpoint_time() - time_eps;
-      while (state->t >= checkpoint_time() - time_eps) ++at.checkpoint_count;
+      while (state->t >= checkpoint_time() - time_eps) ++checkpoint_count;
       if (due || InterruptRequested()) write_checkpoint();
     }
     if (StopIfInterrupted(output, *state, energy.account(), at_output, &result)) return result;
