@@ -149,7 +149,7 @@ probes:
   // A section thicker than the elements are long (a 1000 km thread on a 1 m cable).
   EXPECT_EQ(ErrorOf(Cantilever("bar: {shape: rectangle, width: 0.01, height: 0.01}",
                                "bar: {shape: circle, diameter: 1.0e6}")),
-            "scene.yaml:11:14: a section 1e+06 m thick (the diameter of its area) is thicker than "
+            "scene.yaml:12:14: a section 1e+06 m thick (the diameter of its area) is thicker than "
             "the 0.0625 m elements of cable 'beam' are long; cable elements must be slender: "
             "check the unit of the section, or use fewer elements (key 'section')");
   EXPECT_EQ(ErrorOf(WithNet("meshes: 100, center: [0, 0, 1]")),
