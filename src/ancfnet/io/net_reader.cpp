@@ -10,7 +10,7 @@
 #include <unistd.h>
 
 #include "ancfnet/io/connection_law_reader.hpp"
-#include "ancfnet/io/slender_elements.hpp"
+#include "ancfnet/io/slender_cables.hpp"
 #include "ancfnet/model/net_builder.hpp"
 
 namespace ancfnet {
@@ -239,8 +239,8 @@ void ReadNet(const YamlValue& item, const Library& library, ModelBuilder* builde
   const Section& section = ReadSection(map, map, library);
   spec.thread = ReadThreadProperties(map, ReadMaterial(map, map, library), section);
   if (auto v = map.Find("elements_per_thread")) spec.elements_per_thread = v->AsInt(1, 1000);
-  CheckSlenderElements(section, ShortestThread(spec.topology) / spec.elements_per_thread,
-                       fmt::format("the threads of net '{}'", spec.name), map.Get("section"));
+  CheckSlenderCable(section, ShortestThread(spec.topology),
+                    fmt::format("the shortest thread of net '{}'", spec.name), map.Get("section"));
   if (auto v = map.Find("natural_length_ratio")) spec.natural_length_ratio = v->AsPositive();
   if (auto v = map.Find("knot_model"))
     spec.knot_model =

@@ -26,7 +26,7 @@
 #include "ancfnet/io/rigid_body_reader.hpp"
 #include "ancfnet/io/scene_library.hpp"
 #include "ancfnet/io/scene_settings_reader.hpp"
-#include "ancfnet/io/slender_elements.hpp"
+#include "ancfnet/io/slender_cables.hpp"
 #include "ancfnet/io/unique_names.hpp"
 #include "ancfnet/io/yaml_reader.hpp"
 #include "ancfnet/model/model_builder.hpp"
@@ -187,8 +187,8 @@ void ReadCable(const YamlValue& item, const Library& library, ModelBuilder* buil
       Lookup(library.materials, map.Get("material"), "material", "known materials");
   const Section& section =
       Lookup(library.sections, map.Get("section"), "section", "known sections");
-  CheckSlenderElements(section, (spec.end - spec.start).norm() / spec.num_elements,
-                       fmt::format("cable '{}'", spec.name), map.Get("section"));
+  CheckSlenderCable(section, (spec.end - spec.start).norm(), fmt::format("cable '{}'", spec.name),
+                    map.Get("section"));
   CableProperties& properties = spec.properties;
   properties = MakeCableProperties(material, section);
   if (auto v = map.Find("tension_only")) properties.tension_only = v->AsBool();

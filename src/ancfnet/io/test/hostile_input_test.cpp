@@ -146,16 +146,18 @@ probes:
             "scene.yaml:18:50: expected a number in [1, 3], got '100' (key 'exponent')");
   EXPECT_EQ(ErrorOf(WithNet("mesh_size: 2.0, center: [0, 0, 1]")),
             "scene.yaml:18:53: a mesh of 2 m does not fit in a net of side 1 m (key 'mesh_size')");
-  // A section thicker than the elements are long (a 1000 km thread on a 1 m cable).
+  // A section thicker than the cable is long (a 1000 km thread on a 1 m cable); elements
+  // shorter than it are a refined mesh, not an error.
   EXPECT_EQ(ErrorOf(Cantilever("bar: {shape: rectangle, width: 0.01, height: 0.01}",
                                "bar: {shape: circle, diameter: 1.0e6}")),
             "scene.yaml:12:14: a section 1e+06 m thick (the diameter of its area) is thicker than "
-            "the 0.0625 m elements of cable 'beam' are long; cable elements must be slender: "
-            "check the unit of the section, or use fewer elements (key 'section')");
+            "cable 'beam' is long (1 m); a cable must be slender: check the unit of the section "
+            "(key 'section')");
+  EXPECT_EQ(ErrorOf(Cantilever("elements: 16", "elements: 1000")), "");
   EXPECT_EQ(ErrorOf(WithNet("meshes: 100, center: [0, 0, 1]")),
             "scene.yaml:19:15: a section 0.0113 m thick (the diameter of its area) is thicker than "
-            "the 0.01 m elements of the threads of net 'net' are long; cable elements must be "
-            "slender: check the unit of the section, or use fewer elements (key 'section')");
+            "the shortest thread of net 'net' is long (0.01 m); a cable must be slender: check "
+            "the unit of the section (key 'section')");
   EXPECT_EQ(ErrorOf(WithNet("meshes: 80, center: [0, 0, 1]")), "");
   // A contact law so stiff that a contact lasts less than 1/1000 of a step.
   const auto with_stiffness = [](const std::string& stiffness) {
