@@ -90,6 +90,7 @@ same_outputs "$work/net" "$work/net_stopped" "net stopped by SIGINT and restarte
 expect_refusal "another scene" "not of $net" \
   "$ancfnet" run "$net" -o "$work/other" --restart "$work/pendulum_ckpt/checkpoint.bin"
 grep -q "pendulum.yaml" "$work/stderr" || fail "another scene: the checkpoint's scene is not named"
+[[ ! -e "$work/other" ]] || fail "another scene: the output directory was created"
 head -c 200 "$work/pendulum_ckpt/checkpoint.bin" >"$work/truncated.bin"
 expect_refusal "truncated" "truncated checkpoint" \
   "$ancfnet" run "$pendulum" -o "$work/pendulum_restart" --restart "$work/truncated.bin"

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <memory>
 #include <optional>
-#include <vector>
 #include <utility>
+#include <vector>
 
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/forces/self_contact.hpp"
@@ -142,13 +142,13 @@ RunSummary RunScene(const Scene& scene, const RunOptions& options) {
   const AnalysisType type = options.analysis_type.value_or(scene.analysis.type);
   const bool is_static = type == AnalysisType::kStatic;
   CheckCheckpointOptions(scene, options, is_static);
-  CreateOutputDirectory(options.output_dir);
   std::vector<std::byte> checkpoint;
   std::optional<ArchiveReader> resume;
   if (!options.restart.empty()) {
     checkpoint = ReadCheckpointFile(options.restart, scene);
     resume.emplace(checkpoint.data(), checkpoint.size(), options.restart.string());
   }
+  CreateOutputDirectory(options.output_dir);
   OutputWriters writers(scene, options.output_dir, resume ? &*resume : nullptr);
   ProgressReporter progress(
       is_static ? "load factor" : "t =", is_static ? 1.0 : scene.analysis.dynamics.end_time,
