@@ -23,7 +23,8 @@ struct TimeLoopCheckpoints {
   /// Called at each checkpoint with the state reached and the time loop's part of the
   /// checkpoint: the state, the step control, the integrator's memory (ā, contact couplings, the
   /// Jacobian in use), the energy account and the statistics. The caller adds its own (the
-  /// outputs') and writes the file; it may throw InputError when it cannot.
+  /// outputs') and writes the file; it may throw InputError when it cannot. Required when
+  /// every > 0.
   std::function<void(const State& state, const std::vector<std::byte>& loop)> write;
   /// Continue from this part of a checkpoint (read to its end) instead of starting at the given
   /// state; nothing is handed to `output` before the first step. Null: start afresh.
