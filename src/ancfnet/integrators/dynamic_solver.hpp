@@ -25,7 +25,7 @@ struct TimeLoopCheckpoints {
   /// Jacobian in use), the energy account and the statistics. The caller adds its own (the
   /// outputs') and writes the file; it may throw InputError when it cannot. Required when
   /// every > 0.
-  std::function<void(const State& state, const std::vector<std::byte>& loop)> write;
+  std::function<void(const State& state, const std::vector<std::byte>& loop)> write = nullptr;
   /// Continue from this part of a checkpoint (read to its end) instead of starting at the given
   /// state; nothing is handed to `output` before the first step. Null: start afresh.
   ArchiveReader* resume = nullptr;
