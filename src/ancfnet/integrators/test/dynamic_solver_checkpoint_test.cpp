@@ -4,6 +4,7 @@
 // self-contact pairs, contact couplings of the iteration matrix, the reused Jacobian with its KLU
 // pivot order, ā of generalised-α, the energy account and the energy step control.
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cstring>
@@ -84,8 +85,9 @@ void ExpectSameOutputs(const std::vector<Output>& expected, const std::vector<Ou
 }
 
 // Runs the scene uninterrupted with a checkpoint every `every` s, then from its checkpoint number
-// `which` again, and compares.
-void ExpectRestartReproducesTheRun(const std::string& yaml, double every, std::size_t which) {
+// `which` again, and compares; the failures of the uninterrupted run into `failures` when given.
+void ExpectRestartReproducesTheRun(const std::string& yaml, double every, std::size_t which,
+                                   std::vector<FailureEvent>* failures = nullptr) {
   const Scene scene = ParseScene(yaml);
   const DynamicSettings& settings = scene.analysis.dynamics;
   std::vector<Output> outputs;
@@ -105,6 +107,7 @@ void ExpectRestartReproducesTheRun(const std::string& yaml, double every, std::s
   State state = MakeInitialState(scene.model);
   const SolveResult full = SolveDynamic(scene.model, settings, 0.0, record, &state, taking);
   ASSERT_TRUE(full.completed) << full.message;
+  if (failures) *failures = full.failures;
   ASSERT_GT(checkpoints.size(), which);
   const std::vector<Output> full_outputs = outputs;
   const Checkpoint& from = checkpoints[which];
@@ -153,6 +156,31 @@ TEST(DynamicSolverCheckpoint, ExplicitVerletContinuesBitForBit) {
                "type: tanh, static: 0.3, kinetic: 0.3, regularization_speed: 1.0e-2");
   yaml.replace(yaml.find("time_step: 1.0e-3"), 17, "time_step: 1.0e-4");
   ExpectRestartReproducesTheRun(yaml, 0.05, 1);
+}
+
+// A chain whose top spring breaks early: the time loop initialises the integrator again at the
+// failure, and the run continued after it still matches.
+TEST(DynamicSolverCheckpoint, ARunContinuedAfterALinkBrokeMatchesWithEveryIntegrator) {
+  for (const char* integrator : {"generalized_alpha", "midpoint", "explicit_verlet"}) {
+    SCOPED_TRACE(integrator);
+    std::vector<FailureEvent> failures;
+    ExpectRestartReproducesTheRun(fmt::format(R"(
+gravity: [0, 0, -9.81]
+point_masses:
+  - {{name: anchor, mass: 1.0, position: [0, 0, 0], fixed: true}}
+  - {{name: upper, mass: 1.0, position: [0.1, 0, -1]}}
+  - {{name: lower, mass: 1.0, position: [0.2, 0, -2]}}
+spring_dampers:
+  - {{name: top, from: anchor, to: upper, law: {{type: linear, stiffness: 1000}},
+     breaking_force: 25}}
+  - {{name: bottom, from: upper, to: lower, law: {{type: linear, stiffness: 1000}}}}
+analysis: {{type: dynamic, integrator: {}, time_step: 1.0e-4, end_time: 0.3}}
+)",
+                                              integrator),
+                                  0.05, 2, &failures);
+    ASSERT_EQ(failures.size(), 1u);
+    EXPECT_LT(failures[0].time, 0.15);  // before the checkpoint the run continues from
+  }
 }
 
 TEST(DynamicSolverCheckpoint, ACheckpointOfAnotherModelIsRefused) {
