@@ -37,12 +37,17 @@ extern "C" void RequestStopOnSignal(int signal) {
   std::signal(signal, SIG_DFL);
 }
 
+// The work limit of `run` and `check`, lifted by --force.
+ancfnet::LoadOptions WorkLimit(bool force) {
+  return {.max_unknown_steps = force ? 0.0 : ancfnet::kMaxUnknownSteps};
+}
+
 int RunCommand(const std::string& scene_file, const std::string& output_dir, bool quiet,
-               std::optional<ancfnet::AnalysisType> type) {
+               std::optional<ancfnet::AnalysisType> type, bool force, ancfnet::RunOptions options) {
   std::signal(SIGINT, RequestStopOnSignal);
   std::signal(SIGTERM, RequestStopOnSignal);
-  const ancfnet::Scene scene = ancfnet::LoadScene(scene_file);
-  ancfnet::RunOptions options;
+  // A static solve takes no time steps: no work limit.
+  const ancfnet::Scene scene = ancfnet::LoadScene(scene_file, WorkLimit(force || type.has_value()));
   options.output_dir = output_dir.empty()
                            ? std::filesystem::path("out") / std::filesystem::path(scene_file).stem()
                            : std::filesystem::path(output_dir);
@@ -52,6 +57,9 @@ int RunCommand(const std::string& scene_file, const std::string& output_dir, boo
   if (summary.interrupted) {
     fmt::print(stderr, "\nancfnet: {}; outputs up to t = {:.9g} kept in {}\n", summary.message,
                summary.end_time, options.output_dir.string());
+    if (options.checkpoint_every > 0.0)
+      fmt::print(stderr, "ancfnet: continue with: ancfnet run {} -o {} --restart {}\n", scene_file,
+                 options.output_dir.string(), (options.output_dir / "checkpoint.bin").string());
     return 128 + ancfnet::InterruptRequested();
   }
   if (!summary.completed) {
@@ -94,6 +102,18 @@ int main(int argc, char** argv) {
     command->add_option("-o,--output", output_dir, "Output directory (default: out/<scene name>)");
     command->add_flag("-q,--quiet", quiet, "No progress line and no closing message");
   }
+  bool force = false;
+  run->add_flag("--force", force,
+                "Run even when the estimated work (steps × unknowns) is beyond what finishes in "
+                "months");
+  ancfnet::RunOptions run_options;
+  run->add_option("--checkpoint-every", run_options.checkpoint_every,
+                  "Write the complete state to OUTPUT/checkpoint.bin every T s of simulated time "
+                  "(and when interrupted)")
+      ->type_name("T");
+  run->add_option("--restart", run_options.restart,
+                  "Continue from a checkpoint of this scene, appending to the outputs in OUTPUT")
+      ->type_name("CHECKPOINT");
   CLI::App* check = app.add_subcommand("check", "Validate a scene file and describe the model");
   check->add_option("scene", scene_file, "Scene file (YAML)")->required();
   ancfnet::ModalCommand modal;
@@ -111,14 +131,14 @@ int main(int argc, char** argv) {
   }
   try {
     if (*check) {
-      ancfnet::PrintSceneReport(ancfnet::LoadScene(scene_file), stdout);
+      ancfnet::PrintSceneReport(ancfnet::LoadScene(scene_file, WorkLimit(false)), stdout);
       return 0;
     }
     if (*modal.command) return ancfnet::RunModalCommand(modal);
     if (*identify) return ancfnet::RunIdentifyCommand(identify_arguments, stdout);
     if (*assumed_modes.command) return ancfnet::RunAssumedModesCommand(assumed_modes);
     const auto type = *run_static ? std::optional(ancfnet::AnalysisType::kStatic) : std::nullopt;
-    return RunCommand(scene_file, output_dir, quiet, type);
+    return RunCommand(scene_file, output_dir, quiet, type, force, run_options);
   } catch (const ancfnet::InputError& e) {
     fmt::print(stderr, "ancfnet: {}\n", e.what());
     return kExitInputError;

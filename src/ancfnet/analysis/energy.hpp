@@ -1,6 +1,8 @@
 #pragma once
 /// @file Energy accounting of a run.
 
+#include "ancfnet/common/binary_archive.hpp"
+
 namespace ancfnet {
 
 /// Energies of the whole system (J). `work` is the work done by external loads other than
@@ -14,6 +16,15 @@ struct EnergyAccount {
   double work = 0.0;
   double dissipated = 0.0;
   double Balance() const { return kinetic + strain + gravity + dissipated - work; }
+
+  /// Writes the five energies to a checkpoint.
+  void Save(ArchiveWriter* out) const {
+    for (double e : {kinetic, strain, gravity, work, dissipated}) out->Write(e);
+  }
+  /// Reads what Save wrote.
+  void Load(ArchiveReader* in) {
+    for (double* e : {&kinetic, &strain, &gravity, &work, &dissipated}) *e = in->Read<double>();
+  }
 };
 
 }  // namespace ancfnet

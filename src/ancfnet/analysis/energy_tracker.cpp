@@ -102,4 +102,22 @@ void EnergyTracker::Release(const Model& model, const Workspace& ws, double rele
   viscous_ = ws.viscous_force;
 }
 
+void EnergyTracker::SaveCheckpoint(ArchiveWriter* out) const {
+  account_.Save(out);
+  out->Write(t_);
+  out->Write(load_factor_);
+  for (const VectorXd* v : {&q_, &applied_, &drive_, &v_, &viscous_}) out->Write(*v);
+}
+
+void EnergyTracker::LoadCheckpoint(ArchiveReader* in) {
+  account_.Load(in);
+  t_ = in->Read<double>();
+  load_factor_ = in->Read<double>();
+  for (VectorXd* v : {&q_, &applied_, &drive_, &v_, &viscous_}) {
+    const Index size = v->size();
+    in->Read(v);
+    if (v->size() != size) in->Fail("an energy account of the wrong length for this scene");
+  }
+}
+
 }  // namespace ancfnet

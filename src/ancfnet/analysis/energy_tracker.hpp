@@ -48,6 +48,12 @@ class EnergyTracker {
   /// start the next step.
   void Release(const Model& model, const Workspace& ws, double released);
   const EnergyAccount& account() const { return account_; }
+  /// Writes the account and the state and forces of the last step that the next step's
+  /// quadrature starts from.
+  void SaveCheckpoint(ArchiveWriter* out) const;
+  /// Restores what SaveCheckpoint wrote (for the same model); throws InputError when a vector
+  /// has the wrong length.
+  void LoadCheckpoint(ArchiveReader* in);
 
  private:
   EnergyAccount account_;

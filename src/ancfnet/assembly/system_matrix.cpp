@@ -179,15 +179,42 @@ void SystemMatrix::RebuildContactCouplings(const std::vector<std::pair<Index, In
   if (keep >= 0)
     std::erase_if(couplings_,
                   [&](const ContactCoupling& c) { return num_updates_ - c.last_near > keep; });
-  contact_coupling_.clear();
-  for (std::size_t i = 0; i < couplings_.size(); ++i)
-    contact_coupling_.emplace(PairKey(couplings_[i].a, couplings_[i].b), static_cast<int>(i));
+  IndexContactCouplings();
   for (const auto* owners : {&required, &near})
     for (auto [a, b] : *owners) {
       if (a > b) std::swap(a, b);
       if (contact_coupling_.emplace(PairKey(a, b), static_cast<int>(couplings_.size())).second)
         couplings_.push_back({a, b, num_updates_});
     }
+  Rebuild();
+}
+
+void SystemMatrix::IndexContactCouplings() {
+  contact_coupling_.clear();
+  for (std::size_t i = 0; i < couplings_.size(); ++i)
+    contact_coupling_.emplace(PairKey(couplings_[i].a, couplings_[i].b), static_cast<int>(i));
+}
+
+void SystemMatrix::SaveContactCouplings(ArchiveWriter* out) const {
+  out->Write(num_updates_);
+  out->WriteSequence(couplings_, [](ArchiveWriter& w, const ContactCoupling& c) {
+    w.Write(static_cast<std::int64_t>(c.a));
+    w.Write(static_cast<std::int64_t>(c.b));
+    w.Write(c.last_near);
+  });
+}
+
+void SystemMatrix::LoadContactCouplings(ArchiveReader* in) {
+  num_updates_ = in->Read<long>();
+  const Index num_owners = BodyOwner(num_bodies_);
+  const auto read = [&](ArchiveReader& r, ContactCoupling* c) {
+    c->a = static_cast<Index>(r.Read<std::int64_t>());
+    c->b = static_cast<Index>(r.Read<std::int64_t>());
+    c->last_near = r.Read<long>();
+    if (c->a < 0 || c->a > c->b || c->b >= num_owners) r.Fail("a contact coupling of no owner");
+  };
+  in->ReadSequence(&couplings_, 3 * sizeof(std::int64_t), read);
+  IndexContactCouplings();
   Rebuild();
 }
 

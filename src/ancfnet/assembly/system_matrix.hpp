@@ -9,6 +9,7 @@
 
 #include "ancfnet/assembly/contact_coupling_settings.hpp"
 #include "ancfnet/assembly/dof_map.hpp"
+#include "ancfnet/common/binary_archive.hpp"
 #include "ancfnet/common/types.hpp"
 #include "ancfnet/elements/beam_shape.hpp"
 
@@ -60,6 +61,12 @@ class SystemMatrix {
   void set_contact_coupling_settings(const ContactCouplingSettings& settings) {
     coupling_settings_ = settings;
   }
+  /// Writes the contact couplings (in their order, with when each was last near) and the count
+  /// of updates: what the pattern and its later updates depend on.
+  void SaveContactCouplings(ArchiveWriter* out) const;
+  /// Restores what SaveContactCouplings wrote and rebuilds the pattern from it (the same pattern,
+  /// numbered the same). Throws InputError when an owner is not one of this model's.
+  void LoadContactCouplings(ArchiveReader* in);
   /// Number of contact couplings in the pattern.
   int num_contact_couplings() const { return static_cast<int>(couplings_.size()); }
   /// Number of times the pattern was built (1 after construction).
@@ -100,6 +107,8 @@ class SystemMatrix {
   // Drops the stale couplings, adds those of `required` and `near` that are missing, rebuilds.
   void RebuildContactCouplings(const std::vector<std::pair<Index, Index>>& required,
                                const std::vector<std::pair<Index, Index>>& near);
+  // contact_coupling_ from couplings_.
+  void IndexContactCouplings();
   // The pattern and the slots of every group from group_blocks_ and couplings_.
   void Rebuild();
 

@@ -7,10 +7,12 @@
 
 #include "ancfnet/analysis/energy_tracker.hpp"
 #include "ancfnet/common/error.hpp"
+#include "ancfnet/common/interrupt.hpp"
 #include "ancfnet/integrators/explicit_verlet.hpp"
 #include "ancfnet/integrators/generalized_alpha.hpp"
 #include "ancfnet/integrators/implicit_midpoint.hpp"
 #include "ancfnet/solvers/energy_step_control.hpp"
+#include "ancfnet/state/state_archive.hpp"
 
 namespace ancfnet {
 namespace {
@@ -18,34 +20,89 @@ namespace {
 // Accepted steps in a row before a reduced step may grow again.
 constexpr int kStepsBeforeGrowth = 4;
 
+// Where the time loop stands besides the state: what a checkpoint carries of it.
+struct LoopPosition {
+  double start = 0.0;          // t₀ of the first run
+  double step = 0.0;           // the step to try next
+  long output_count = 1;       // the next output is at t₀ + output_count Δ ...
+  double next_output = 0.0;    // ... this time
+  int accepted_in_a_row = 0;
+
+  void Save(ArchiveWriter* out) const {
+    out->Write(start);
+    out->Write(step);
+    out->Write(output_count);
+    out->Write(next_output);
+    out->Write(accepted_in_a_row);
+  }
+  void Load(ArchiveReader* in) {
+    start = in->Read<double>();
+    step = in->Read<double>();
+    output_count = in->Read<long>();
+    next_output = in->Read<double>();
+    accepted_in_a_row = in->Read<int>();
+  }
+};
+
 template <class Integrator>
 SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings, double output_interval,
-                        const OutputCallback& output, Integrator& integrator, State* state) {
+                        const OutputCallback& output, const TimeLoopCheckpoints& checkpoints,
+                        Integrator& integrator, State* state) {
   SolveResult result;
-  if (!integrator.Initialize(state)) {
+  LoopPosition at;
+  ArchiveReader* resume = checkpoints.resume;
+  if (resume) {
+    LoadState(resume, state);
+    at.Load(resume);
+    LoadCheckpoint(resume, &result);
+  }
+  if (!(resume ? integrator.Resume(*state, resume) : integrator.Initialize(state))) {
     result.completed = false;
     result.message = "the mass matrix is singular";
     return result;
   }
   EnergyTracker energy(model, integrator.workspace(), *state, 1.0, Integrator::kEnergyQuadrature);
-  energy.Advance(model, integrator.workspace(), *state, 1.0);
-  if (!EmitOutput(output, *state, energy.account(), &result)) return result;
+  if (resume) {
+    energy.LoadCheckpoint(resume);
+  } else {
+    energy.Advance(model, integrator.workspace(), *state, 1.0);
+    // Output times t₀ + k Δ, computed from k so that they carry no summed round-off.
+    at.start = state->t;
+    at.step = settings.time_step;
+    at.next_output = at.start + (output_interval > 0.0 ? output_interval : 0.0);
+    if (!EmitOutput(output, *state, energy.account(), &result)) return result;
+  }
+  EnergyStepControl energy_control(settings.energy_drift, at.start, settings.end_time,
+                                   energy.account());
+  if (resume) {
+    energy_control.LoadCheckpoint(resume);
+    resume->ExpectEnd();
+  }
 
   const double nominal = settings.time_step;
   const double min_step = settings.smallest_step();
   const double end = settings.end_time;
   const double time_eps = 1e-9 * nominal;
-  double step = nominal;
-  // Output times t₀ + k Δ, computed from k so that they carry no summed round-off.
-  const double start = state->t;
-  long output_count = 1;
-  double next_output = start + (output_interval > 0.0 ? output_interval : 0.0);
-  int accepted_in_a_row = 0;
-  EnergyStepControl energy_control(settings.energy_drift, start, end, energy.account());
+  // The next checkpoint is at t₀ + k · every: the first after the state (a continued run may
+  // take them at another interval than the run it continues).
+  long checkpoint_count =
+      checkpoints.every > 0.0
+          ? static_cast<long>(std::floor((state->t - at.start + time_eps) / checkpoints.every)) + 1
+          : 0;
+  const auto write_checkpoint = [&] {
+    ArchiveWriter out;
+    SaveState(*state, &out);
+    at.Save(&out);
+    SaveCheckpoint(result, &out);
+    integrator.SaveCheckpoint(&out);
+    energy.SaveCheckpoint(&out);
+    energy_control.SaveCheckpoint(&out);
+    checkpoints.write(*state, out.bytes());
+  };
   const bool can_fail = CanFail(model);
   while (state->t < end - time_eps) {
-    double h = std::min(step, end - state->t);
-    if (output_interval > 0.0) h = std::min(h, next_output - state->t);
+    double h = std::min(at.step, end - state->t);
+    if (output_interval > 0.0) h = std::min(h, at.next_output - state->t);
     const StepOutcome outcome = integrator.Step(h, state);
     result.statistics.newton_iterations += outcome.newton_iterations;
     result.statistics.jacobian_updates += outcome.jacobian_updates;
@@ -53,9 +110,9 @@ SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings, dou
     if (!outcome.accepted) {
       ++result.statistics.step_cuts;
       ++result.statistics.step_cut_reasons[StepCutReason(outcome.failure)];
-      accepted_in_a_row = 0;
-      step = 0.5 * h;
-      if (step < min_step) {
+      at.accepted_in_a_row = 0;
+      at.step = 0.5 * h;
+      if (at.step < min_step) {
         result.completed = false;
         result.message = fmt::format(
             "time step failed at t = {:.9g} s even with h = {:.3g} s (minimum {:.3g} s): {}",
@@ -69,8 +126,8 @@ SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings, dou
         std::max(result.statistics.max_constraint_violation, outcome.constraint_violation);
     // Land exactly on output and end times (no round-off from summing steps).
     if (std::abs(state->t - end) <= time_eps) state->t = end;
-    if (output_interval > 0.0 && std::abs(state->t - next_output) <= time_eps)
-      state->t = next_output;
+    if (output_interval > 0.0 && std::abs(state->t - at.next_output) <= time_eps)
+      state->t = at.next_output;
     energy.Advance(model, integrator.workspace(), *state, 1.0);
     if (can_fail) {
       const FailureCheck check = ApplyFailures(model, state, &result.failures);
@@ -89,21 +146,31 @@ SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings, dou
     if (cut < 1.0) {
       // A power-of-two fraction of the nominal step, so that the step (and with it the
       // iteration matrix, which depends on h) changes seldom.
-      step = std::max(nominal * std::exp2(std::floor(std::log2(cut * h / nominal))), min_step);
-      accepted_in_a_row = 0;
+      at.step = std::max(nominal * std::exp2(std::floor(std::log2(cut * h / nominal))), min_step);
+      at.accepted_in_a_row = 0;
     } else if (!energy_control.may_grow()) {
-      accepted_in_a_row = 0;
-    } else if (++accepted_in_a_row >= kStepsBeforeGrowth && step < nominal) {
-      step = std::min(2.0 * step, nominal);
-      accepted_in_a_row = 0;
+      at.accepted_in_a_row = 0;
+    } else if (++at.accepted_in_a_row >= kStepsBeforeGrowth && at.step < nominal) {
+      at.step = std::min(2.0 * at.step, nominal);
+      at.accepted_in_a_row = 0;
     }
-    const bool at_output =
-        output_interval <= 0.0 || state->t >= next_output - time_eps || state->t >= end - time_eps;
+    const bool at_output = output_interval <= 0.0 || state->t >= at.next_output - time_eps ||
+                           state->t >= end - time_eps;
     if (at_output) {
       if (!EmitOutput(output, *state, energy.account(), &result)) return result;
       if (output_interval > 0.0)
-        while (next_output <= state->t + time_eps)
-          next_output = start + static_cast<double>(++output_count) * output_interval;
+        while (at.next_output <= state->t + time_eps)
+          at.next_output = at.start + static_cast<double>(++at.output_count) * output_interval;
+    }
+    if (checkpoints.every > 0.0) {
+      // The checkpoint of an interrupt is taken before its extra output, which a continued run
+      // must not repeat.
+      const auto checkpoint_time = [&] {
+        return at.start + static_cast<double>(checkpoint_count) * checkpoints.every;
+      };
+      const bool due = state->t >= checkpoint_time() - time_eps;
+      while (state->t >= checkpoint_time() - time_eps) ++checkpoint_count;
+      if (due || InterruptRequested()) write_checkpoint();
     }
     if (StopIfInterrupted(output, *state, energy.account(), at_output, &result)) return result;
   }
@@ -113,7 +180,8 @@ SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings, dou
 }  // namespace
 
 SolveResult SolveDynamic(const Model& model, const DynamicSettings& settings,
-                         double output_interval, const OutputCallback& output, State* state) {
+                         double output_interval, const OutputCallback& output, State* state,
+                         const TimeLoopCheckpoints& checkpoints) {
   if (model.num_constraint_equations() > 0 &&
       settings.integrator != IntegratorType::kGeneralizedAlpha)
     throw InputError(fmt::format(
@@ -124,17 +192,17 @@ SolveResult SolveDynamic(const Model& model, const DynamicSettings& settings,
   switch (settings.integrator) {
     case IntegratorType::kExplicitVerlet: {
       ExplicitVerletIntegrator integrator(model);
-      return RunTimeLoop(model, settings, output_interval, output, integrator, state);
+      return RunTimeLoop(model, settings, output_interval, output, checkpoints, integrator, state);
     }
     case IntegratorType::kImplicitMidpoint: {
       ImplicitMidpointIntegrator integrator(model, settings);
-      return RunTimeLoop(model, settings, output_interval, output, integrator, state);
+      return RunTimeLoop(model, settings, output_interval, output, checkpoints, integrator, state);
     }
     case IntegratorType::kGeneralizedAlpha:
       break;
   }
   GeneralizedAlphaIntegrator integrator(model, settings);
-  return RunTimeLoop(model, settings, output_interval, output, integrator, state);
+  return RunTimeLoop(model, settings, output_interval, output, checkpoints, integrator, state);
 }
 
 }  // namespace ancfnet

@@ -34,16 +34,33 @@ ExplicitVerletIntegrator::ExplicitVerletIntegrator(const Model& model)
 }
 
 bool ExplicitVerletIntegrator::Initialize(State* state) {
-  ws_.link_broken = state->link_broken;
-  ws_.body_rotation = state->body_rotation;
-  ws_.joint_history = state->joint_history;
-  contact_history_ = state->contact_history;
-  SystemMatrix mass(model_, dofs_);
-  AssembleMassMatrix(model_, ws_, &mass);
-  if (!mass_solver_.Factorize(mass.matrix())) return false;
+  if (!Prepare(*state)) return false;
+  critical_step_ = EstimateCriticalStep(state->q);
+  critical_step_time_ = state->t;
   if (!self_contact_.empty()) self_contact_.FindCandidates(*state, 0.0);
   CalcAcceleration(state->q, state->v, &state->a);
   return true;
+}
+
+void ExplicitVerletIntegrator::SaveCheckpoint(ArchiveWriter* out) const {
+  out->Write(critical_step_);
+  out->Write(critical_step_time_);
+}
+
+bool ExplicitVerletIntegrator::Resume(const State& state, ArchiveReader* in) {
+  critical_step_ = in->Read<double>();
+  critical_step_time_ = in->Read<double>();
+  return Prepare(state);
+}
+
+bool ExplicitVerletIntegrator::Prepare(const State& state) {
+  ws_.link_broken = state.link_broken;
+  ws_.body_rotation = state.body_rotation;
+  ws_.joint_history = state.joint_history;
+  contact_history_ = state.contact_history;
+  SystemMatrix mass(model_, dofs_);
+  AssembleMassMatrix(model_, ws_, &mass);
+  return mass_solver_.Factorize(mass.matrix());
 }
 
 void ExplicitVerletIntegrator::CalcAcceleration(const VectorXd& q, const VectorXd& v, VectorXd* a) {
@@ -75,8 +92,16 @@ StepOutcome ExplicitVerletIntegrator::Step(double h, State* state) {
     *state = previous_;
     outcome.accepted = false;
     outcome.failure =
-        fmt::format("non-finite state: is h = {:.3g} s above the stability limit (about {:.3g} s)?",
-                    h, EstimateCriticalStep(state->q));
+        h > critical_step_
+            ? fmt::format(
+                  "non-finite state: h = {:.3g} s is above the stability limit of the cable "
+                  "elements, about {:.3g} s (2/ω_max at t = {:.9g} s)",
+                  h, critical_step_, critical_step_time_)
+            : fmt::format(
+                  "non-finite state at h = {:.3g} s, below the stability limit of the cable "
+                  "elements (about {:.3g} s, 2/ω_max at t = {:.9g} s): a stiffer force (contact, "
+                  "a link, a body) or a motion that ran away made the run diverge",
+                  h, critical_step_, critical_step_time_);
     return outcome;
   }
   if (!self_contact_.empty()) {

@@ -3,6 +3,7 @@
 /// once; for comparison with generalised-α. Conditionally stable: h < 2/ω_max.
 
 #include "ancfnet/analysis/energy_tracker.hpp"
+#include "ancfnet/common/binary_archive.hpp"
 #include "ancfnet/forces/forces.hpp"
 #include "ancfnet/forces/self_contact.hpp"
 #include "ancfnet/forces/target_contact.hpp"
@@ -19,13 +20,23 @@ class ExplicitVerletIntegrator {
   /// (natural frequency √(σ₀ g) for a block) needs the implicit integrators.
   explicit ExplicitVerletIntegrator(const Model& model);
 
-  /// Factorises the mass matrix and sets a₀ = M⁻¹ (Q_ext − Q_int) with the state's broken links.
-  /// False if M is singular.
+  /// Factorises the mass matrix and sets a₀ = M⁻¹ (Q_ext − Q_int) with the state's broken links;
+  /// estimates the critical step at the state (EstimateCriticalStep), which the message of a
+  /// step that diverges quotes. False if M is singular.
   bool Initialize(State* state);
+  /// Writes the stability estimate of the last Initialize (all else a step needs is the state).
+  void SaveCheckpoint(ArchiveWriter* out) const;
+  /// Continues from `state` (instead of Initialize): the mass matrix factorised, the state's
+  /// acceleration kept, the stability estimate read. False if M is singular.
+  bool Resume(const State& state, ArchiveReader* in);
   /// v_{n+½} = v_n + h/2 a_n; q_{n+1} = q_n + h v_{n+½};
   /// a_{n+1} = M⁻¹ (Q_ext − Q_int)(q_{n+1}, v_{n+½}); v_{n+1} = v_{n+½} + h/2 a_{n+1}
   /// (Hairer, Lubich & Wanner 2006, I.1.4; velocity-dependent forces use v_{n+½}).
-  /// Rejected, with the state unchanged, when the result is not finite.
+  /// Rejected, with the state unchanged, when the result is not finite; the failure then says
+  /// whether h is above the critical step estimated at the last Initialize (and at which time),
+  /// or below it, so that a stiffer force or a runaway motion made the run diverge. (Estimated at
+  /// the last accepted state instead, which had often grown wild before it overflowed, the
+  /// "limit" came out as 10⁻¹⁰⁴ s.)
   StepOutcome Step(double h, State* state);
   const Workspace& workspace() const { return ws_; }
   static constexpr EnergyQuadrature kEnergyQuadrature = EnergyQuadrature::kTrapezoidal;
@@ -35,6 +46,8 @@ class ExplicitVerletIntegrator {
   double EstimateCriticalStep(const VectorXd& q) const;
 
  private:
+  // Takes over the state's broken links, body rotations and histories and factorises M.
+  bool Prepare(const State& state);
   void CalcAcceleration(const VectorXd& q, const VectorXd& v, VectorXd* a);
 
   const Model& model_;
@@ -49,6 +62,8 @@ class ExplicitVerletIntegrator {
   VectorXd rhs_;
   VectorXd a_free_;
   State previous_;
+  double critical_step_ = 0.0;       // EstimateCriticalStep at the last Initialize (s) ...
+  double critical_step_time_ = 0.0;  // ... at this time (s)
 };
 
 }  // namespace ancfnet

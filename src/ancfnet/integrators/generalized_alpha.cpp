@@ -113,6 +113,18 @@ bool GeneralizedAlphaIntegrator::Initialize(State* state) {
   return true;
 }
 
+void GeneralizedAlphaIntegrator::SaveCheckpoint(ArchiveWriter* out) const {
+  out->Write(a_bar_);
+  core_.SaveCheckpoint(out);
+}
+
+bool GeneralizedAlphaIntegrator::Resume(const State& state, ArchiveReader* in) {
+  in->Read(&a_bar_);
+  if (a_bar_.size() != state.a.size()) in->Fail("an auxiliary acceleration of the wrong length");
+  core_.Resume(state, in);
+  return true;
+}
+
 StepOutcome GeneralizedAlphaIntegrator::Step(double h, State* state) {
   const bool rebuilt = core_.BeginStep(h, *state);
   StepProblem problem(*this, h, *state);

@@ -28,6 +28,11 @@ class GeneralizedAlphaIntegrator {
   /// Returns false when the mass matrix is singular. Called again after a failure: the state's
   /// broken links are taken over and the stored Jacobian dropped.
   bool Initialize(State* state);
+  /// Writes what the next steps depend on besides the state: ā and ImplicitStepCore's.
+  void SaveCheckpoint(ArchiveWriter* out) const;
+  /// Continues from `state` with what SaveCheckpoint wrote (instead of Initialize). Always true;
+  /// throws InputError when `in` does not fit.
+  bool Resume(const State& state, ArchiveReader* in);
   /// Advances `state` by h. On rejection the state is left unchanged.
   StepOutcome Step(double h, State* state);
   /// Forces evaluated at the last accepted state (for energy accounting).

@@ -25,6 +25,15 @@ class ImplicitMidpointIntegrator {
   /// the scheme itself does not need it). Returns false when the mass matrix is singular. Called
   /// again after a failure: the state's broken links are taken over.
   bool Initialize(State* state);
+  /// Writes what the next steps depend on besides the state (ImplicitStepCore's).
+  void SaveCheckpoint(ArchiveWriter* out) const { core_.SaveCheckpoint(out); }
+  /// Continues from `state` with what SaveCheckpoint wrote (instead of Initialize). Always true;
+  /// throws InputError when `in` does not fit.
+  bool Resume(const State& state, ArchiveReader* in) {
+    core_.Resume(state, in);
+    midpoint_ = state;
+    return true;
+  }
   /// Advances `state` by h; state->a becomes the step's mean acceleration (v_{n+1} − v_n)/h.
   /// On rejection the state is left unchanged.
   StepOutcome Step(double h, State* state);

@@ -32,13 +32,31 @@ ImplicitStepCore::ImplicitStepCore(const Model& model, const DynamicSettings& se
 }
 
 bool ImplicitStepCore::Initialize(State* state) {
-  ws_.link_broken = state->link_broken;
-  ws_.body_rotation = state->body_rotation;
-  ws_.joint_history = state->joint_history;
+  TakeOver(*state);
   newton_.InvalidateJacobian();
   if (!CalcInitialAcceleration(model_, dofs_, damping_, ws_, state)) return false;
   previous_ = *state;
   return true;
+}
+
+void ImplicitStepCore::SaveCheckpoint(ArchiveWriter* out) const {
+  out->Write(last_h_);
+  iteration_matrix_.SaveContactCouplings(out);
+  newton_.SaveCheckpoint(out);
+}
+
+void ImplicitStepCore::Resume(const State& state, ArchiveReader* in) {
+  TakeOver(state);
+  previous_ = state;
+  last_h_ = in->Read<double>();
+  iteration_matrix_.LoadContactCouplings(in);
+  newton_.LoadCheckpoint(in);
+}
+
+void ImplicitStepCore::TakeOver(const State& state) {
+  ws_.link_broken = state.link_broken;
+  ws_.body_rotation = state.body_rotation;
+  ws_.joint_history = state.joint_history;
 }
 
 bool ImplicitStepCore::BeginStep(double h, const State& state) {

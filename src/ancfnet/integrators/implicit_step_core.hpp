@@ -3,6 +3,7 @@
 /// the unknowns, scratch, the full mass matrix, the iteration matrix and its Newton solver, and
 /// the state at t_n while a step is attempted. Each integrator keeps only its own update formulas.
 
+#include "ancfnet/common/binary_archive.hpp"
 #include "ancfnet/forces/forces.hpp"
 #include "ancfnet/forces/joint_constraints.hpp"
 #include "ancfnet/forces/self_contact.hpp"
@@ -22,6 +23,13 @@ class ImplicitStepCore {
   /// Takes over the state's broken links, drops the stored Jacobian (also after a failure) and
   /// sets the consistent acceleration a = M⁻¹ (Q_ext − Q_int). False when M is singular.
   bool Initialize(State* state);
+  /// Writes what the next steps depend on besides the state: the last step size, the contact
+  /// couplings of the iteration matrix and Newton's Jacobian reuse with its factorisation.
+  void SaveCheckpoint(ArchiveWriter* out) const;
+  /// Continues from `state`, reached by an earlier run whose SaveCheckpoint wrote `in`: what
+  /// Initialize does, except that the acceleration is the state's and the step size, the
+  /// couplings and the factorisation are those written. Throws InputError when `in` does not fit.
+  void Resume(const State& state, ArchiveReader* in);
   /// Saves the state at t_n (its contact history and body rotations included; ws() evaluates the
   /// bodies with the latter until AcceptStep); drops the factorisation when h changed (the
   /// iteration matrix depends on h; so do the contacts' LuGre bristles, stepped over h). Finds
@@ -85,6 +93,9 @@ class ImplicitStepCore {
   const Workspace& workspace() const { return ws_; }
 
  private:
+  // The state's broken links, body rotations and joint histories into ws_.
+  void TakeOver(const State& state);
+
   const Model& model_;
   DampingModel damping_;
   TargetContact contact_;

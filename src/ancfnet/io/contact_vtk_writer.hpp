@@ -31,6 +31,8 @@ class ContactVtkWriter {
 
   int num_frames() const { return collection_.num_frames(); }
   std::filesystem::path collection_path() const { return collection_.collection_path(); }
+  /// The series' frames and collection (VtkCollection::Resume continues a series).
+  VtkCollection& collection() { return collection_; }
   std::filesystem::path FramePath(int index) const { return collection_.FramePath(index); }
 
  private:

@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include <unistd.h>
 
 #include "ancfnet/io/connection_law_reader.hpp"
+#include "ancfnet/io/slender_cables.hpp"
 #include "ancfnet/model/net_builder.hpp"
 
 namespace ancfnet {
@@ -185,6 +187,14 @@ TetherSpec ReadTether(const YamlValue& value, const Library& library) {
   return tether;
 }
 
+// Length of the shortest thread between its knots (m); infinite without threads.
+double ShortestThread(const NetTopology& topology) {
+  double shortest = std::numeric_limits<double>::infinity();
+  for (const auto& [i, j] : topology.threads)
+    shortest = std::min(shortest, (topology.knots[i] - topology.knots[j]).norm());
+  return shortest;
+}
+
 }  // namespace
 
 void ReadNet(const YamlValue& item, const Library& library, ModelBuilder* builder,
@@ -226,9 +236,11 @@ void ReadNet(const YamlValue& item, const Library& library, ModelBuilder* builde
     const Vector3d v = map.Find("axis_v") ? map.Get("axis_v").AsVector3() : Vector3d::UnitY();
     spec.axis = u.cross(v);
   }
-  spec.thread =
-      ReadThreadProperties(map, ReadMaterial(map, map, library), ReadSection(map, map, library));
+  const Section& section = ReadSection(map, map, library);
+  spec.thread = ReadThreadProperties(map, ReadMaterial(map, map, library), section);
   if (auto v = map.Find("elements_per_thread")) spec.elements_per_thread = v->AsInt(1, 1000);
+  CheckSlenderCable(section, ShortestThread(spec.topology),
+                    fmt::format("the shortest thread of net '{}'", spec.name), map.Get("section"));
   if (auto v = map.Find("natural_length_ratio")) spec.natural_length_ratio = v->AsPositive();
   if (auto v = map.Find("knot_model"))
     spec.knot_model =

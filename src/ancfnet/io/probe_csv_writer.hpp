@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,8 +22,11 @@ namespace ancfnet {
 class ProbeCsvWriter {
  public:
   /// Opens (truncates) `path` and writes the header. Throws InputError "cannot write PATH" when
-  /// the file cannot be opened.
-  ProbeCsvWriter(const std::filesystem::path& path, const std::vector<Probe>& probes);
+  /// the file cannot be opened. With `resume_at`, continues the file an earlier run wrote: it is
+  /// cut back to its first `resume_at` bytes (its size at a checkpoint, header included) and
+  /// appended to; throws InputError when it is missing or shorter.
+  ProbeCsvWriter(const std::filesystem::path& path, const std::vector<Probe>& probes,
+                 std::optional<std::uintmax_t> resume_at = std::nullopt);
 
   ProbeCsvWriter(const ProbeCsvWriter&) = delete;
   ProbeCsvWriter& operator=(const ProbeCsvWriter&) = delete;
@@ -40,6 +44,8 @@ class ProbeCsvWriter {
   /// The column names, `time` first.
   const std::vector<std::string>& columns() const { return columns_; }
   const std::filesystem::path& path() const { return path_; }
+  /// Bytes in the file so far.
+  std::uintmax_t size() const { return size_; }
 
  private:
   struct FileCloser {
@@ -54,6 +60,7 @@ class ProbeCsvWriter {
   std::vector<std::string> columns_;
   std::vector<double> values_;  // time, then the probe values of one row
   std::string row_;
+  std::uintmax_t size_ = 0;
 };
 
 }  // namespace ancfnet

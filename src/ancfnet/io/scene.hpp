@@ -2,6 +2,7 @@
 /// @file A scene: the model plus what to run and what to record. Loaded from YAML by
 /// io/scene_loader.hpp or assembled in C++.
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -26,6 +27,9 @@ struct Scene {
   AnalysisSettings analysis;
   OutputSettings output;
   std::string source;  ///< file the scene came from (for messages)
+  /// FNV-1a hash of the scene's text (common/fnv_hash.hpp), 0 for a scene built in C++: a
+  /// checkpoint is refused by a scene with another hash.
+  std::uint64_t text_hash = 0;
 };
 
 }  // namespace ancfnet

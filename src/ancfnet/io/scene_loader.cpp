@@ -13,17 +13,20 @@
 #include <vector>
 
 #include "ancfnet/common/error.hpp"
+#include "ancfnet/common/fnv_hash.hpp"
 #include "ancfnet/io/beam_reader.hpp"
 #include "ancfnet/io/clearance_joint_reader.hpp"
 #include "ancfnet/io/ideal_joint_reader.hpp"
 #include "ancfnet/io/closest_name.hpp"
 #include "ancfnet/io/connection_law_reader.hpp"
+#include "ancfnet/io/contact_period_check.hpp"
 #include "ancfnet/io/contact_reader.hpp"
 #include "ancfnet/io/damping_reader.hpp"
 #include "ancfnet/io/net_reader.hpp"
 #include "ancfnet/io/rigid_body_reader.hpp"
 #include "ancfnet/io/scene_library.hpp"
 #include "ancfnet/io/scene_settings_reader.hpp"
+#include "ancfnet/io/slender_cables.hpp"
 #include "ancfnet/io/unique_names.hpp"
 #include "ancfnet/io/yaml_reader.hpp"
 #include "ancfnet/model/model_builder.hpp"
@@ -184,6 +187,8 @@ void ReadCable(const YamlValue& item, const Library& library, ModelBuilder* buil
       Lookup(library.materials, map.Get("material"), "material", "known materials");
   const Section& section =
       Lookup(library.sections, map.Get("section"), "section", "known sections");
+  CheckSlenderCable(section, (spec.end - spec.start).norm(), fmt::format("cable '{}'", spec.name),
+                    map.Get("section"));
   CableProperties& properties = spec.properties;
   properties = MakeCableProperties(material, section);
   if (auto v = map.Find("tension_only")) properties.tension_only = v->AsBool();
@@ -360,7 +365,8 @@ std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
   return probes;
 }
 
-Scene ReadScene(const YamlValue& root, const std::filesystem::path& scene_directory) {
+Scene ReadScene(const YamlValue& root, const std::filesystem::path& scene_directory,
+                const LoadOptions& options) {
   if (root.node().IsNull())
     root.FailPlain("the scene is empty (expected a map with materials, sections and cables)");
   const YamlMap scene = root.AsMap();
@@ -424,6 +430,13 @@ Scene ReadScene(const YamlValue& root, const std::filesystem::path& scene_direct
   if (auto v = scene.Find("contact")) ReadContact(*v, scene_directory, &builder);
 
   result.model = root.Locate([&] { return builder.Build(); });
+  if (auto v = scene.Find("contact");
+      v && result.analysis.type == AnalysisType::kDynamic && v->AsMap().Find("law"))
+    if (auto k = v->AsMap().Get("law").AsMap().Find("stiffness"))
+      CheckContactPeriod(result.model, result.analysis.dynamics.time_step, *k);
+  if (auto v = scene.Find("analysis");
+      v && options.max_unknown_steps > 0.0 && result.analysis.type == AnalysisType::kDynamic)
+    CheckRunWork(result.analysis.dynamics, result.model.num_dofs(), options.max_unknown_steps, *v);
   if (auto v = scene.Find("probes")) result.probes = ReadProbes(*v, result.model, point_masses);
   if (auto v = scene.Find("output")) result.output = ReadOutputSettings(*v);
   result.source = root.source();
@@ -442,7 +455,7 @@ Scene ReadScene(const YamlValue& root, const std::filesystem::path& scene_direct
 constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t{64} << 20;
 
 Scene ParseScene(const std::string& yaml_text, const std::string& source_name,
-                 const std::filesystem::path& scene_directory) {
+                 const std::filesystem::path& scene_directory, const LoadOptions& options) {
   YAML::Node root;
   try {
     const std::vector<YAML::Node> documents = YAML::LoadAll(yaml_text);
@@ -458,13 +471,15 @@ Scene ParseScene(const std::string& yaml_text, const std::string& source_name,
     ThrowYamlError(source_name, error);
   }
   try {
-    return ReadScene(YamlValue::Root(root, source_name), scene_directory);
+    Scene scene = ReadScene(YamlValue::Root(root, source_name), scene_directory, options);
+    scene.text_hash = Fnv1aHash(yaml_text.data(), yaml_text.size());
+    return scene;
   } catch (const YAML::Exception& error) {  // a node access the reader did not foresee
     ThrowYamlError(source_name, error);
   }
 }
 
-Scene LoadScene(const std::filesystem::path& file) {
+Scene LoadScene(const std::filesystem::path& file, const LoadOptions& options) {
   std::error_code error;
   std::ifstream in(file, std::ios::binary);
   if (!in || std::filesystem::is_directory(file, error))
@@ -479,7 +494,7 @@ Scene LoadScene(const std::filesystem::path& file) {
                                  size, kMaxSceneFileBytes >> 20));
   std::ostringstream text;
   text << in.rdbuf();
-  return ParseScene(text.str(), file.string(), file.parent_path());
+  return ParseScene(text.str(), file.string(), file.parent_path(), options);
 }
 
 }  // namespace ancfnet

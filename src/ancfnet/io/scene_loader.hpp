@@ -10,10 +10,22 @@
 
 namespace ancfnet {
 
+/// Limits a loader applies beyond the plausibility of each value.
+struct LoadOptions {
+  /// A dynamic analysis whose estimated work, steps × unknowns (end_time / time_step times the
+  /// model's coordinates), exceeds this is refused at `time_step` with the estimate and the hint
+  /// `--force`; 0: no limit (the CLI's `run --force`, and every use but `run` and `check`).
+  double max_unknown_steps = 0.0;
+};
+
+/// Estimated work above which `ancfnet run` asks for --force: 10¹² unknown-steps take about
+/// three months on one core at the 1.5·10⁵ unknown-steps per second of the S3 net drop.
+inline constexpr double kMaxUnknownSteps = 1e12;
+
 /// Reads and parses the scene file `file`. Throws InputError "FILE: cannot open scene file" when
 /// it cannot be read, refuses at once (before reading) a file that is not a regular file (a
 /// device, a pipe) or holds more than 64 MiB, and throws as ParseScene otherwise.
-Scene LoadScene(const std::filesystem::path& file);
+Scene LoadScene(const std::filesystem::path& file, const LoadOptions& options = {});
 
 /// Parses a scene from YAML text; `source_name` names it in messages and in Scene::source.
 /// Relative paths in the scene (a mesh target's `file`) are taken from `scene_directory` (the
@@ -22,6 +34,7 @@ Scene LoadScene(const std::filesystem::path& file);
 /// malformed YAML, an unknown or missing key, a value of the wrong type or out of range, an
 /// unknown name, or a model the ModelBuilder refuses.
 Scene ParseScene(const std::string& yaml_text, const std::string& source_name = "<string>",
-                 const std::filesystem::path& scene_directory = {});
+                 const std::filesystem::path& scene_directory = {},
+                 const LoadOptions& options = {});
 
 }  // namespace ancfnet

@@ -86,6 +86,20 @@ AnalysisSettings ReadAnalysisSettings(const YamlValue& analysis) {
   return settings;
 }
 
+void CheckRunWork(const DynamicSettings& dynamics, Index unknowns, double max_unknown_steps,
+                  const YamlValue& analysis) {
+  const double steps = dynamics.end_time / dynamics.time_step;
+  const double work = steps * static_cast<double>(unknowns);
+  if (work <= max_unknown_steps) return;
+  const YamlMap map = analysis.AsMap();
+  const YamlValue where = map.Find("time_step") ? map.Get("time_step") : analysis;
+  where.Fail(fmt::format(
+      "{:.3g} steps (end_time {} s / time_step {} s) of {} unknowns are {:.3g} unknown-steps, "
+      "above the limit of {:.0e} (10¹² take months on one core); check time_step and end_time, "
+      "or run it anyway with --force",
+      steps, dynamics.end_time, dynamics.time_step, unknowns, work, max_unknown_steps));
+}
+
 OutputSettings ReadOutputSettings(const YamlValue& output) {
   const YamlMap map = output.AsMap();
   map.CheckKeys({"interval", "vtk", "vtk_points_per_element"});

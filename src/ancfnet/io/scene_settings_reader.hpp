@@ -13,6 +13,12 @@ namespace ancfnet {
 /// Throws InputError (with the file position) on an unknown key or an out-of-range value.
 AnalysisSettings ReadAnalysisSettings(const YamlValue& analysis);
 
+/// Refuses (at `time_step` of the `analysis` map, else at the map) a dynamic analysis whose
+/// estimated work, (end_time / time_step) steps × `unknowns`, exceeds `max_unknown_steps`, with
+/// the estimate and the hint --force.
+void CheckRunWork(const DynamicSettings& dynamics, Index unknowns, double max_unknown_steps,
+                  const YamlValue& analysis);
+
 /// The `output` map: interval (s, ≥ 0), vtk (bool), vtk_points_per_element (1 … 64).
 OutputSettings ReadOutputSettings(const YamlValue& output);
 

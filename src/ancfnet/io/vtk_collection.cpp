@@ -34,6 +34,19 @@ void VtkCollection::AddFrame(double time, const std::string& text) {
   WriteCollection();
 }
 
+std::vector<double> VtkCollection::frame_times() const {
+  std::vector<double> times;
+  for (const Frame& frame : frames_) times.push_back(frame.time);
+  return times;
+}
+
+void VtkCollection::Resume(const std::vector<double>& times) {
+  frames_.clear();
+  for (double time : times)
+    frames_.push_back({time, FramePath(num_frames()).filename().string()});
+  WriteCollection();
+}
+
 void VtkCollection::WriteCollection() const {
   std::string out =
       "<?xml version=\"1.0\"?>\n"

@@ -58,6 +58,11 @@ class VtkCollection {
   void AddFrame(double time, const std::string& text);
 
   int num_frames() const { return static_cast<int>(frames_.size()); }
+  /// The time of each frame listed, in order.
+  std::vector<double> frame_times() const;
+  /// Continues a series an earlier run wrote: lists the frames 0 … n − 1 at `times` and rewrites
+  /// the collection (later frames are overwritten as they come).
+  void Resume(const std::vector<double>& times);
   std::filesystem::path collection_path() const { return directory_ / (base_name_ + ".pvd"); }
   /// The file of frame `index` (written or not).
   std::filesystem::path FramePath(int index) const;

@@ -46,6 +46,8 @@ class VtkSeriesWriter {
   int num_frames() const { return collection_.num_frames(); }
   /// The .pvd collection file.
   std::filesystem::path collection_path() const { return collection_.collection_path(); }
+  /// The series' frames and collection (VtkCollection::Resume continues a series).
+  VtkCollection& collection() { return collection_; }
   /// The .vtp file of frame `index` (written or not).
   std::filesystem::path FramePath(int index) const { return collection_.FramePath(index); }
 

@@ -5,18 +5,22 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <utility>
+#include <vector>
 
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/forces/self_contact.hpp"
 #include "ancfnet/forces/target_contact.hpp"
 #include "ancfnet/integrators/dynamic_solver.hpp"
+#include "ancfnet/io/checkpoint_file.hpp"
 #include "ancfnet/io/contact_vtk_writer.hpp"
 #include "ancfnet/io/output_directory.hpp"
 #include "ancfnet/io/probe_csv_writer.hpp"
 #include "ancfnet/io/vtk_writer.hpp"
 #include "ancfnet/run/progress_reporter.hpp"
 #include "ancfnet/solvers/static_solver.hpp"
+#include "ancfnet/state/state_archive.hpp"
 
 namespace ancfnet {
 namespace {
@@ -24,15 +28,30 @@ namespace {
 // Probe rows and VTK frames for every output step.
 class OutputWriters {
  public:
-  OutputWriters(const Scene& scene, const std::filesystem::path& dir)
+  // With `resume`, continues the outputs in `dir` from a checkpoint's part written by
+  // SaveCheckpoint.
+  OutputWriters(const Scene& scene, const std::filesystem::path& dir, ArchiveReader* resume)
       : scene_(scene),
         contact_(scene.model),
         self_contact_(scene.model),
-        csv_(dir / "probes.csv", scene.probes) {
+        csv_(dir / "probes.csv", scene.probes,
+             resume ? std::optional(resume->Read<std::uintmax_t>()) : std::nullopt),
+        last_written_(MakeInitialState(scene.model)) {
     if (scene.output.write_vtk)
       vtk_ = std::make_unique<VtkSeriesWriter>(dir, "cables", scene.output.vtk_points_per_element);
     if (scene.output.write_vtk && scene.model.contact().enabled())
       contact_vtk_ = std::make_unique<ContactVtkWriter>(dir, "contacts");
+    if (resume) LoadCheckpoint(resume);
+  }
+  // What a continued run needs to append to the outputs as this run would have: the size of
+  // probes.csv, the frames of each series, the outputs written and the last of them.
+  void SaveCheckpoint(ArchiveWriter* out) const {
+    out->Write(csv_.size());
+    out->Write(outputs_);
+    out->Write(vtk_ ? vtk_->collection().frame_times() : std::vector<double>());
+    out->Write(contact_vtk_ ? contact_vtk_->collection().frame_times() : std::vector<double>());
+    last_energy_.Save(out);
+    SaveState(last_written_, out);
   }
   // Writes nothing and throws SolverError when a value to be written is NaN or infinite, so
   // that the files only ever hold finite numbers. The VTK frame goes first: it checks the whole
@@ -44,8 +63,13 @@ class OutputWriters {
     if (contact_vtk_) contact_vtk_->WriteFrame(state.t, contacts);
     csv_.Append(scene_.model, state, energy, contacts);
     last_energy_ = energy;
+    last_written_ = state;
+    ++outputs_;
   }
   const EnergyAccount& last_energy() const { return last_energy_; }
+  // The last state written (always finite) and the number of outputs.
+  const State& last_written() const { return last_written_; }
+  long outputs() const { return outputs_; }
   // The active contacts with the rigid targets and between threads and knots at `state`, in a
   // buffer reused between outputs.
   const std::vector<ContactPoint>& CollectContacts(const State& state) {
@@ -60,6 +84,21 @@ class OutputWriters {
   }
 
  private:
+  void LoadCheckpoint(ArchiveReader* in) {
+    outputs_ = in->Read<long>();
+    for (VtkCollection* series : {vtk_ ? &vtk_->collection() : nullptr,
+                                  contact_vtk_ ? &contact_vtk_->collection() : nullptr}) {
+      std::vector<double> times;
+      in->Read(&times);
+      if (series)
+        series->Resume(times);
+      else if (!times.empty())
+        in->Fail("VTK frames of a scene that writes none");
+    }
+    last_energy_.Load(in);
+    LoadState(in, &last_written_);
+  }
+
   static void CheckFinite(const State& state, const EnergyAccount& energy) {
     if (!std::isfinite(state.t) || !state.q.allFinite() || !state.v.allFinite())
       throw SolverError("non-finite state (coordinates or velocities)", state.t);
@@ -81,39 +120,66 @@ class OutputWriters {
   std::unique_ptr<VtkSeriesWriter> vtk_;
   std::unique_ptr<ContactVtkWriter> contact_vtk_;
   EnergyAccount last_energy_;
+  State last_written_;
+  long outputs_ = 0;
 };
+
+// Refuses checkpoint options a run cannot honour.
+void CheckCheckpointOptions(const Scene& scene, const RunOptions& options, bool is_static) {
+  const bool asked = options.checkpoint_every != 0.0 || !options.restart.empty();
+  if (is_static && asked)
+    throw InputError("--checkpoint-every and --restart are for dynamic analyses, not static ones");
+  const double every = options.checkpoint_every;
+  const double step = scene.analysis.dynamics.time_step;
+  if (!std::isfinite(every) || every < 0.0 || (every > 0.0 && every < step))
+    throw InputError(fmt::format(
+        "--checkpoint-every {} s: must be 0 (none) or at least the time step {} s", every, step));
+}
 
 }  // namespace
 
 RunSummary RunScene(const Scene& scene, const RunOptions& options) {
-  CreateOutputDirectory(options.output_dir);
   const AnalysisType type = options.analysis_type.value_or(scene.analysis.type);
   const bool is_static = type == AnalysisType::kStatic;
-  OutputWriters writers(scene, options.output_dir);
+  CheckCheckpointOptions(scene, options, is_static);
+  std::vector<std::byte> checkpoint;
+  std::optional<ArchiveReader> resume;
+  if (!options.restart.empty()) {
+    checkpoint = ReadCheckpointFile(options.restart, scene);
+    resume.emplace(checkpoint.data(), checkpoint.size(), options.restart.string());
+  }
+  CreateOutputDirectory(options.output_dir);
+  OutputWriters writers(scene, options.output_dir, resume ? &*resume : nullptr);
   ProgressReporter progress(
       is_static ? "load factor" : "t =", is_static ? 1.0 : scene.analysis.dynamics.end_time,
       options.show_progress);
 
   State state = MakeInitialState(scene.model);
-  State last_written = state;
-  long outputs = 0;
   std::chrono::steady_clock::duration output_time{};
   const OutputCallback output = [&](const State& s, const EnergyAccount& energy) {
     const auto start = std::chrono::steady_clock::now();
     writers.Write(s, energy);
     output_time += std::chrono::steady_clock::now() - start;
-    last_written = s;
-    ++outputs;
-    progress.Update(s.t, outputs);
+    progress.Update(s.t, writers.outputs());
   };
+  TimeLoopCheckpoints checkpoints{.every = options.checkpoint_every,
+                                  .resume = resume ? &*resume : nullptr};
+  if (options.checkpoint_every > 0.0)
+    checkpoints.write = [&](const State&, const std::vector<std::byte>& loop) {
+      ArchiveWriter out;
+      writers.SaveCheckpoint(&out);
+      out.WriteBytes(loop.data(), loop.size());
+      WriteCheckpointFile(options.output_dir / "checkpoint.bin", scene, out.bytes());
+    };
 
   RunSummary summary;
   summary.analysis = is_static ? "static" : "dynamic";
-  const SolveResult result = is_static
-                                 ? SolveStatic(scene.model, scene.analysis.statics, output, &state)
-                                 : SolveDynamic(scene.model, scene.analysis.dynamics,
-                                                scene.output.interval, output, &state);
+  const SolveResult result =
+      is_static ? SolveStatic(scene.model, scene.analysis.statics, output, &state)
+                : SolveDynamic(scene.model, scene.analysis.dynamics, scene.output.interval, output,
+                               &state, checkpoints);
   progress.Finish();
+  const State& last_written = writers.last_written();
   summary.completed = result.completed;
   summary.interrupted = result.interrupted;
   summary.message = result.message;
@@ -125,7 +191,7 @@ RunSummary RunScene(const Scene& scene, const RunOptions& options) {
   summary.pattern_rebuilds = result.statistics.pattern_rebuilds;
   summary.max_constraint_violation = result.statistics.max_constraint_violation;
   summary.step_cut_reasons = result.statistics.step_cut_reasons;
-  summary.outputs = outputs;
+  summary.outputs = writers.outputs();
   summary.wall_time_s = progress.elapsed_s();
   summary.output_time_s = std::chrono::duration<double>(output_time).count();
   summary.energy = writers.last_energy();

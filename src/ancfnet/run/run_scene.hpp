@@ -14,6 +14,13 @@ struct RunOptions {
   /// Overrides scene.analysis.type (the CLI's `static` subcommand).
   std::optional<AnalysisType> analysis_type;
   bool show_progress = true;
+  /// Simulated time between checkpoints (s), written to output_dir/checkpoint.bin (the latest
+  /// only; also when an interrupt stops the run). 0: none. Dynamic analyses only; at least the
+  /// scene's time step.
+  double checkpoint_every = 0.0;
+  /// A checkpoint of this scene to continue from, appending to the outputs in output_dir that
+  /// the run which wrote it left there. Empty: start at t = 0.
+  std::filesystem::path restart;
 };
 
 /// Runs the analysis and writes into options.output_dir: probes.csv (one row per output step),
@@ -22,8 +29,11 @@ struct RunOptions {
 /// the outputs written so far are kept, summary.json says "failed" with the time and the reason,
 /// and the returned summary has completed == false. An interrupt (common/interrupt.hpp) stops the
 /// run after the step in progress: the state reached is written, summary.json says
-/// "interrupted", and the summary has completed == false and interrupted == true. Throws InputError when the directory cannot
-/// be written.
+/// "interrupted", and the summary has completed == false and interrupted == true. A run
+/// continued from a checkpoint ends with outputs byte for byte those of the run that was never
+/// stopped (docs/reliability.md, "Checkpoints"). Throws InputError when the directory cannot be
+/// written, when a checkpoint cannot be written, or when the one to continue from is refused
+/// (another scene, damaged, truncated) or the outputs it continues are missing.
 RunSummary RunScene(const Scene& scene, const RunOptions& options);
 
 }  // namespace ancfnet

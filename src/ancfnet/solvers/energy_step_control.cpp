@@ -38,4 +38,16 @@ double EnergyStepControl::Cut(double h, const EnergyAccount& account) {
   return std::max(kSmallestCut, kSafety * budget / error);
 }
 
+void EnergyStepControl::SaveCheckpoint(ArchiveWriter* out) const {
+  out->Write(scale_);
+  out->Write(balance_);
+  out->Write(may_grow_);
+}
+
+void EnergyStepControl::LoadCheckpoint(ArchiveReader* in) {
+  scale_ = in->Read<double>();
+  balance_ = in->Read<double>();
+  may_grow_ = in->Read<bool>();
+}
+
 }  // namespace ancfnet

@@ -4,6 +4,7 @@
 /// spread evenly over the run (docs/theory.md, "Energy step control").
 
 #include "ancfnet/analysis/energy.hpp"
+#include "ancfnet/common/binary_archive.hpp"
 
 namespace ancfnet {
 
@@ -26,6 +27,10 @@ class EnergyStepControl {
   double Cut(double h, const EnergyAccount& account);
   /// Whether the last step spent at most half its budget, so that the step may grow.
   bool may_grow() const { return may_grow_; }
+  /// Writes the energy scale and balance reached; LoadCheckpoint restores them into a control
+  /// made with the same drift, start and end.
+  void SaveCheckpoint(ArchiveWriter* out) const;
+  void LoadCheckpoint(ArchiveReader* in);
 
  private:
   double drift_;

@@ -4,6 +4,7 @@
 
 #include <memory>
 
+#include "ancfnet/common/binary_archive.hpp"
 #include "ancfnet/common/types.hpp"
 
 namespace ancfnet {
@@ -27,6 +28,13 @@ class SparseLinearSolver {
   void ForgetPattern();
   /// x = A⁻¹ b with the last factorisation.
   void Solve(const VectorXd& b, VectorXd* x);
+  /// Writes what the next factorisations depend on: for KLU the matrix whose factorisation set
+  /// the pivot order that refactorisations reuse, and the matrix last factorised (pattern and
+  /// values), so that LoadCheckpoint recreates the factorisation bit for bit.
+  void SaveCheckpoint(ArchiveWriter* out) const;
+  /// Recreates the state SaveCheckpoint wrote (analysis, pivot order, last factorisation).
+  /// Throws InputError when the checkpoint's matrices cannot be factorised again.
+  void LoadCheckpoint(ArchiveReader* in);
 
  private:
   struct Impl;

@@ -50,6 +50,12 @@ class NewtonSolver {
     InvalidateJacobian();
     linear_solver_.ForgetPattern();
   }
+  /// Writes the state of the Jacobian reuse (whether a factorisation is held and fresh, the
+  /// iterations of the last solve) and the linear solver's (SparseLinearSolver::SaveCheckpoint):
+  /// all that the next solves depend on besides the problem.
+  void SaveCheckpoint(ArchiveWriter* out) const;
+  /// Recreates what SaveCheckpoint wrote.
+  void LoadCheckpoint(ArchiveReader* in);
 
  private:
   template <class Problem>

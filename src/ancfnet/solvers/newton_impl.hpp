@@ -17,6 +17,20 @@ inline NewtonSolver::NewtonSolver(const NewtonSettings& settings, JacobianUpdate
                                   LinearSolverType linear_solver)
     : settings_(settings), update_(update), linear_solver_(linear_solver) {}
 
+inline void NewtonSolver::SaveCheckpoint(ArchiveWriter* out) const {
+  out->Write(has_factorization_);
+  out->Write(jacobian_fresh_);
+  out->Write(last_iterations_);
+  linear_solver_.SaveCheckpoint(out);
+}
+
+inline void NewtonSolver::LoadCheckpoint(ArchiveReader* in) {
+  has_factorization_ = in->Read<bool>();
+  jacobian_fresh_ = in->Read<bool>();
+  last_iterations_ = in->Read<int>();
+  linear_solver_.LoadCheckpoint(in);
+}
+
 template <class Problem>
 NewtonResult NewtonSolver::Solve(Problem& problem) {
   const bool damped = settings_.line_search == LineSearchMode::kAlways;

@@ -35,6 +35,43 @@ bool StopIfInterrupted(const OutputCallback& output, const State& state,
   return true;
 }
 
+void SaveCheckpoint(const SolveResult& result, ArchiveWriter* out) {
+  const SolveStatistics& s = result.statistics;
+  for (long n : {s.steps, s.newton_iterations, s.jacobian_updates, s.step_cuts,
+                 s.pattern_rebuilds})
+    out->Write(n);
+  out->Write(s.max_constraint_violation);
+  out->Write(static_cast<std::uint64_t>(s.step_cut_reasons.size()));
+  for (const auto& [reason, count] : s.step_cut_reasons) {
+    out->Write(reason);
+    out->Write(count);
+  }
+  out->WriteSequence(result.failures, [](ArchiveWriter& w, const FailureEvent& event) {
+    w.Write(event.time);
+    w.Write(event.what);
+    w.Write(event.tension);
+  });
+}
+
+void LoadCheckpoint(ArchiveReader* in, SolveResult* result) {
+  SolveStatistics& s = result->statistics;
+  for (long* n : {&s.steps, &s.newton_iterations, &s.jacobian_updates, &s.step_cuts,
+                  &s.pattern_rebuilds})
+    *n = in->Read<long>();
+  s.max_constraint_violation = in->Read<double>();
+  s.step_cut_reasons.clear();
+  // Read one by one: a damaged count ends at the end of the payload.
+  for (auto n = in->Read<std::uint64_t>(); n > 0; --n) {
+    std::string reason = in->ReadString();
+    s.step_cut_reasons[reason] = in->Read<long>();
+  }
+  in->ReadSequence(&result->failures, 3 * sizeof(double), [](ArchiveReader& r, FailureEvent* e) {
+    e->time = r.Read<double>();
+    e->what = r.ReadString();
+    e->tension = r.Read<double>();
+  });
+}
+
 std::string StepCutReason(const std::string& failure) {
   static const std::regex kNumber(R"([-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?)");
   return std::regex_replace(failure, kNumber, "#");

@@ -7,6 +7,7 @@
 
 #include "ancfnet/analysis/energy.hpp"
 #include "ancfnet/analysis/failure.hpp"
+#include "ancfnet/common/binary_archive.hpp"
 #include "ancfnet/state/state.hpp"
 
 namespace ancfnet {
@@ -32,6 +33,12 @@ struct SolveResult {
   std::string message;                 ///< why the analysis stopped early
   std::vector<FailureEvent> failures;  ///< threads and connections that broke, in time order
 };
+
+/// Writes the statistics and the failures of `result` (what a run continued from a checkpoint
+/// carries on counting from).
+void SaveCheckpoint(const SolveResult& result, ArchiveWriter* out);
+/// Reads what SaveCheckpoint wrote into `result`'s statistics and failures.
+void LoadCheckpoint(ArchiveReader* in, SolveResult* result);
 
 /// Called with the state at t = 0 (load factor 0) and at every output step. It may throw
 /// SolverError when a value cannot be written (not finite): the analysis then stops.

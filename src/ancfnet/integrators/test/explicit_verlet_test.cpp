@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <Eigen/Eigenvalues>
 
 #include "ancfnet/integrators/explicit_verlet.hpp"
@@ -71,6 +73,33 @@ TEST(ExplicitVerletTest, StableJustBelowTheLimitAndUnstableJustAbove) {
   const double exact = GlobalCriticalStep(model, MakeInitialState(model).q);
   EXPECT_LT(MaxSpeedAfterSteps(model, 0.98 * exact, 3000), 1e-4);
   EXPECT_GT(MaxSpeedAfterSteps(model, 1.02 * exact, 3000), 1.0);
+}
+
+// A step above the limit (2.5 × the estimate, which is at least half the true limit) diverges
+// after many accepted steps whose states grow wild; the message quotes the estimate made at the
+// start (once 1e-104 s, made at the last wild state) and says that h is above it; a step below
+// the limit that still diverges is not blamed on h.
+TEST(ExplicitVerletTest, ADivergedStepQuotesTheEstimateOfTheStart) {
+  const Model model = MakeUnloadedCantilever();
+  const double estimate =
+      ExplicitVerletIntegrator(model).EstimateCriticalStep(MakeInitialState(model).q);
+  ExplicitVerletIntegrator integrator(model);
+  State state = MakeInitialState(model);
+  state.v.setConstant(1e-6);
+  ASSERT_TRUE(integrator.Initialize(&state));
+  StepOutcome outcome;
+  for (int i = 0; i < 100000 && (outcome = integrator.Step(2.5 * estimate, &state)).accepted; ++i) {
+  }
+  ASSERT_FALSE(outcome.accepted);
+  EXPECT_EQ(outcome.failure,
+            fmt::format("non-finite state: h = {:.3g} s is above the stability limit of the cable "
+                        "elements, about {:.3g} s (2/ω_max at t = 0 s)",
+                        2.5 * estimate, estimate));
+  // A state so wild that its forces overflow diverges at any step: not blamed on h.
+  state.q *= 1e200;
+  const StepOutcome small = integrator.Step(0.5 * estimate, &state);
+  ASSERT_FALSE(small.accepted);
+  EXPECT_NE(small.failure.find("below the stability limit"), std::string::npos) << small.failure;
 }
 
 }  // namespace

@@ -94,6 +94,28 @@ TEST(HostileInput, AStepCountNoRunCouldFinishIsRefused) {
   EXPECT_EQ(ErrorOf(Cantilever("  type: static\n", "  type: dynamic\n  time_step: 1.0e-9\n")), "");
 }
 
+TEST(HostileInput, AnEstimatedWorkBeyondTheLimitAsksForForce) {
+  // 10⁹ steps of the cantilever's 102 coordinates; the CLI's limit is kMaxUnknownSteps.
+  const std::string scene =
+      Cantilever("  type: static\n", "  type: dynamic\n  time_step: 1.0e-7\n  end_time: 100\n");
+  const auto error_with_limit = [&](double limit) -> std::string {
+    try {
+      ParseScene(scene, "scene.yaml", {}, {.max_unknown_steps = limit});
+    } catch (const InputError& error) {
+      return error.what();
+    }
+    return "";
+  };
+  EXPECT_EQ(error_with_limit(1e11),
+            "scene.yaml:21:14: 1e+09 steps (end_time 100 s / time_step 1e-07 s) of 102 unknowns "
+            "are 1.02e+11 unknown-steps, above the limit of 1e+11 (10¹² take months on one core); "
+            "check time_step and end_time, or run it anyway with --force (key 'time_step')");
+  EXPECT_EQ(error_with_limit(1.1e11), "");
+  EXPECT_EQ(error_with_limit(0.0), "");  // --force
+  EXPECT_EQ(ErrorOf(scene), "");         // no limit unless asked
+  EXPECT_EQ(kMaxUnknownSteps, 1e12);
+}
+
 TEST(HostileInput, FilesThatAreNotScenesAreRefusedBeforeReading) {
   auto error_of_file = [](const std::filesystem::path& file) -> std::string {
     try {
@@ -124,6 +146,36 @@ probes:
             "scene.yaml:18:50: expected a number in [1, 3], got '100' (key 'exponent')");
   EXPECT_EQ(ErrorOf(WithNet("mesh_size: 2.0, center: [0, 0, 1]")),
             "scene.yaml:18:53: a mesh of 2 m does not fit in a net of side 1 m (key 'mesh_size')");
+  // A section thicker than the cable is long (a 1000 km thread on a 1 m cable); elements
+  // shorter than it are a refined mesh, not an error.
+  EXPECT_EQ(ErrorOf(Cantilever("bar: {shape: rectangle, width: 0.01, height: 0.01}",
+                               "bar: {shape: circle, diameter: 1.0e6}")),
+            "scene.yaml:12:14: a section 1e+06 m thick (the diameter of its area) is thicker than "
+            "cable 'beam' is long (1 m); a cable must be slender: check the unit of the section "
+            "(key 'section')");
+  EXPECT_EQ(ErrorOf(Cantilever("elements: 16", "elements: 1000")), "");
+  EXPECT_EQ(ErrorOf(WithNet("meshes: 100, center: [0, 0, 1]")),
+            "scene.yaml:19:15: a section 0.0113 m thick (the diameter of its area) is thicker than "
+            "the shortest thread of net 'net' is long (0.01 m); a cable must be slender: check "
+            "the unit of the section (key 'section')");
+  EXPECT_EQ(ErrorOf(WithNet("meshes: 80, center: [0, 0, 1]")), "");
+  // A contact law so stiff that a contact lasts less than 1/1000 of a step.
+  const auto with_stiffness = [](const std::string& stiffness) {
+    return test::Replace(
+        Cantilever("probes:\n", "contact:\n  law: {type: hertz, stiffness: " + stiffness +
+                                     "}\n  targets:\n    - {name: ball, type: sphere, center: "
+                                     "[0, 0, -1], radius: 0.1}\nprobes:\n"),
+        "  type: static\n", "  type: dynamic\n  time_step: 1.0e-3\n");
+  };
+  const std::string stiff = ErrorOf(with_stiffness("1.0e30"));
+  EXPECT_EQ(stiff.rfind("scene.yaml:18:33: a contact of the lightest contact point (0.00696 kg) "
+                        "would last 2π √(m/k) = 2.86e-15 s, less than 1/1000 of the time step "
+                        "0.001 s: no step could resolve it; check the stiffness and its unit "
+                        "(N/m^1.5) (key 'stiffness')",
+                        0),
+            0u)
+      << stiff;
+  EXPECT_EQ(ErrorOf(with_stiffness("1.0e9")), "");
   // Axes that are not orthonormal: the message names the net, not its side.
   EXPECT_EQ(ErrorOf(WithNet("meshes: 2, axis_u: [1, 1, 0]")),
             "scene.yaml:18:5: net axes u = [1, 1, 0] and v = [0, 1, 0] must be unit vectors "
