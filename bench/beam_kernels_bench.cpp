@@ -39,7 +39,7 @@ void BM_BeamForce(benchmark::State& state) {
   const BeamElementCase c = MakeBeamElementCase();
   Vector24d force;
   for (auto _ : state) {
-    CalcBeamInternalForce(c.parameters, c.e, {.force = &force});
+    CalcBeamInternalForce(c.parameters, c.e, Vector24d::Zero(), {.force = &force});
     benchmark::DoNotOptimize(force.data());
     benchmark::ClobberMemory();
   }
@@ -52,7 +52,8 @@ void BM_BeamForceAndJacobian(benchmark::State& state) {
   Vector24d force;
   Matrix24d stiffness;
   for (auto _ : state) {
-    CalcBeamInternalForce(c.parameters, c.e, {.force = &force, .stiffness = &stiffness});
+    CalcBeamInternalForce(c.parameters, c.e, Vector24d::Zero(),
+                          {.force = &force, .stiffness = &stiffness});
     benchmark::DoNotOptimize(force.data());
     benchmark::DoNotOptimize(stiffness.data());
     benchmark::ClobberMemory();

@@ -8,6 +8,7 @@
 
 #include <unistd.h>
 
+#include "ancfnet/io/beam_reader.hpp"
 #include "ancfnet/io/connection_law_reader.hpp"
 #include "ancfnet/model/net_builder.hpp"
 
@@ -208,7 +209,8 @@ void ReadNet(const YamlValue& item, const Library& library, ModelBuilder* builde
                                         "bullets",
                                         "thread_breaking_force",
                                         "link_breaking_force",
-                                        "tether"};
+                                        "tether",
+                                        "element"};
   if (type == 2)
     keys.insert(keys.end(), {"knot_positions", "threads", "perimeter", "axis"});
   else
@@ -226,8 +228,20 @@ void ReadNet(const YamlValue& item, const Library& library, ModelBuilder* builde
     const Vector3d v = map.Find("axis_v") ? map.Get("axis_v").AsVector3() : Vector3d::UnitY();
     spec.axis = u.cross(v);
   }
-  spec.thread =
-      ReadThreadProperties(map, ReadMaterial(map, map, library), ReadSection(map, map, library));
+  if (ReadIsBeam(map)) {
+    // Beam threads (io/beam_reader.hpp): the net's material and section, no rope settings.
+    for (const char* key : {"tension_only", "rope_smoothing_strain", "bending"})
+      if (auto v = map.Find(key))
+        v->Fail(fmt::format("{} is for cable threads; beam threads (element: ancf_beam) are "
+                            "elastic in tension and compression",
+                            key));
+    spec.beam_threads = ReadBeamMaterialAndSection(map, library);
+    spec.thread =
+        MakeCableProperties(ReadMaterial(map, map, library), ReadSection(map, map, library));
+  } else {
+    spec.thread =
+        ReadThreadProperties(map, ReadMaterial(map, map, library), ReadSection(map, map, library));
+  }
   if (auto v = map.Find("elements_per_thread")) spec.elements_per_thread = v->AsInt(1, 1000);
   if (auto v = map.Find("natural_length_ratio")) spec.natural_length_ratio = v->AsPositive();
   if (auto v = map.Find("knot_model"))

@@ -191,13 +191,19 @@ Index ModelBuilder::EndPositionDof(const std::string& knot, const Vector3d& posi
 namespace {
 
 // The properties of a beam's centre line (model.hpp, CableElement): EA, the smaller EI, ρA; the
-// drawing radius of `drawn`. A beam has no Kelvin–Voigt damping and no rope law: refused here.
+// drawing radius of `drawn`. A beam has no rope law, and its Kelvin–Voigt damping is the beam
+// material's (the centre line is undamped: the beam kernel damps): both refused in `drawn`
+// unless they agree.
 CableProperties MakeBeamCentreLineProperties(const CableSpec& spec) {
   const CableProperties& drawn = spec.properties;
-  if (drawn.axial_damping_time != 0.0 || drawn.bending_damping_time != 0.0 || drawn.tension_only)
+  if (drawn.tension_only)
     throw InputError(fmt::format(
-        "cable '{}' is made of ancf_beam elements, which have no Kelvin–Voigt damping and no rope "
-        "law: use Rayleigh or modal damping",
+        "cable '{}' is made of ancf_beam elements, which have no rope law (tension_only)",
+        spec.name));
+  if (drawn.axial_damping_time != spec.beam->material.axial_damping_time ||
+      drawn.bending_damping_time != spec.beam->material.bending_damping_time)
+    throw InputError(fmt::format(
+        "cable '{}' is made of ancf_beam elements: give its damping times in the beam's material",
         spec.name));
   const BeamElementParameters p =
       MakeBeamElementParameters(spec.beam->material, spec.beam->section, 1.0);

@@ -117,12 +117,34 @@ TEST(BeamCable, AContinuationMustBeStraightAndKeepTheSectionFrame) {
   ExpectInputError([&] { builder.AddCable(elsewhere); }, "must start at its end");
 }
 
+TEST(BeamCable, KelvinVoigtDampingComesFromTheBeamMaterial) {
+  ModelBuilder builder;
+  CableSpec spec = BeamAlongX("beam", 0.0, 1.0, Vector3d::UnitZ());
+  spec.beam->material.axial_damping_time = spec.properties.axial_damping_time = 1e-3;
+  spec.beam->material.bending_damping_time = spec.properties.bending_damping_time = 2e-3;
+  builder.AddCable(spec);
+  const Model model = builder.Build();
+  for (const BeamElement& beam : model.beam_elements()) {
+    EXPECT_EQ(beam.parameters.axial_damping_time, 1e-3);
+    EXPECT_EQ(beam.parameters.bending_damping_time, 2e-3);
+  }
+  // The centre line is undamped: the beam kernel does the damping.
+  for (const CableElement& element : model.elements())
+    EXPECT_EQ(element.parameters.axial_damping_time + element.parameters.bending_damping_time, 0.0);
+}
+
 TEST(BeamCable, WhatBeamsDoNotSupportIsRefused) {
   {
     ModelBuilder builder;
     CableSpec spec = BeamAlongX("beam", 0.0, 1.0, Vector3d::UnitZ());
-    spec.properties.axial_damping_time = 1e-3;
-    ExpectInputError([&] { builder.AddCable(spec); }, "Kelvin");
+    spec.properties.axial_damping_time = 1e-3;  // not the beam material's (0)
+    ExpectInputError([&] { builder.AddCable(spec); }, "beam's material");
+  }
+  {
+    ModelBuilder builder;
+    CableSpec spec = BeamAlongX("beam", 0.0, 1.0, Vector3d::UnitZ());
+    spec.properties.tension_only = true;
+    ExpectInputError([&] { builder.AddCable(spec); }, "rope law");
   }
   {
     ModelBuilder builder;
