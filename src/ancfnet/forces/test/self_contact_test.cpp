@@ -62,7 +62,18 @@ struct Fixture {
   // thread a slides along x at 5 cm/s and thread b along −y at 4 cm/s over each other.
   explicit Fixture(const Model& m, const Vector3d& bristle = Vector3d::Zero(), bool sliding = false)
       : model(m), contact(m), state(MakeInitialState(m)) {
-    for (Index i = 0; i < state.v.size(); ++i) state.v[i] = 0.01 * std::sin(1.7 * i + 0.3);
+    // v = 0.01 sin(1.7 i + 0.3) over the cables' (r, r') and the bead in the order of a model
+    // of cables (i is then the coordinate's index); a beam's section gradients stay at rest, so a
+    // model of beams moves its centre lines as the model of cables does.
+    const auto rate = [](Index i) { return 0.01 * std::sin(1.7 * static_cast<double>(i) + 0.3); };
+    for (Index n = 0; n < m.num_nodes(); ++n)
+      for (int k = 0; k < 3; ++k) {
+        state.v[m.nodes()[n].position_dof + k] = rate(6 * n + k);
+        state.v[m.nodes()[n].slope_dof + k] = rate(6 * n + 3 + k);
+      }
+    for (std::size_t p = 0; p < m.point_masses().size(); ++p)
+      for (int k = 0; k < 3; ++k)
+        state.v[m.point_masses()[p].dof + k] = rate(6 * m.num_nodes() + 3 * p + k);
     const Vector3d slide[2] = {Vector3d(0.05, 0.0, 0.0), Vector3d(0.0, -0.04, 0.0)};
     for (int c = 0; c < 2 && sliding; ++c) {
       const Cable& cable = model.cables()[c];
@@ -153,12 +164,13 @@ TEST(SelfContact, JacobiansMatchFiniteDifferences) {
 }
 
 // Issue 13: beam threads touch through the capsules of their centre lines, which are the cable's
-// (the same Hermite in r, r_x), so two crossing beams press into each other exactly as two
-// crossing cables: the same pairs, penetration and normal force, the same forces on positions and
-// slopes (none on the section gradients), and Jacobians that match central differences.
+// (the same Hermite in r, r_x), so two crossing beams moving as the cables do press into each
+// other exactly as two crossing cables (Carvalho–Martins law, its damping included): the same
+// pairs, penetration and normal force, the same forces on positions and slopes (none on the
+// section gradients), and Jacobians that match central differences.
 TEST(SelfContact, CrossingBeamsTouchLikeCrossingCables) {
-  const Model cables = MakeCrossingCables(std::nullopt, false);
-  const Model beams = MakeCrossingCables(std::nullopt, false, true);
+  const Model cables = MakeCrossingCables(std::nullopt, true);
+  const Model beams = MakeCrossingCables(std::nullopt, true, true);
   ASSERT_EQ(beams.beam_elements().size(), 4u);
   const Fixture fc(cables);
   const Fixture fb(beams);
@@ -169,8 +181,6 @@ TEST(SelfContact, CrossingBeamsTouchLikeCrossingCables) {
   EXPECT_GT(sb.max_penetration, 0.2e-3);
   EXPECT_NEAR(sb.max_penetration, sc.max_penetration, 1e-12);
   EXPECT_NEAR(sb.normal_force, sc.normal_force, 1e-9 * sc.normal_force);
-  // Hertz: F = k δ^{3/2} summed over the two pairs, each at least the thread pair's share.
-  EXPECT_GT(sb.normal_force, 1e7 * std::pow(sb.max_penetration, 1.5));
   const VectorXd force_c = fc.Forces(fc.state.q, fc.state.v);
   const VectorXd force_b = fb.Forces(fb.state.q, fb.state.v);
   for (Index n = 0; n < cables.num_nodes(); ++n) {
