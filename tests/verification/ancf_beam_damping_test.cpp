@@ -6,9 +6,9 @@
 //    (bending in both planes, torsion, axial) has ζ = τ ω / 2; with τ_κ = 0 only the axial mode is
 //    damped, with ζ = τ_ε ω / 2 (the bending modes keep the shear's small share);
 //  - a free decay of the first bending mode in the time domain (implicit midpoint, no numerical
-//    damping): the matrix pencil finds ζ₁ = τ_κ ω₁ / 2 and ω₁ of Euler–Bernoulli
-//    (1.8751² √(EI/(ρA L⁴))), and the energy account (kinetic + strain + dissipated) keeps the
-//    launch energy.
+//    damping): the matrix pencil finds ζ₁ = τ_κ ω₁ / 2 at the model's ω₁ (within 0.5 % of
+//    Euler–Bernoulli's 1.8751² √(EI/(ρA L⁴)) with 8 elements), and the energy account (kinetic +
+//    strain + dissipated) keeps the launch energy.
 
 #include <gtest/gtest.h>
 
@@ -92,10 +92,12 @@ TEST(AncfBeamDamping, AxialRetardationTimeDampsTheAxialMode) {
   std::printf("axial mode %.1f Hz: zeta %.6e (tau omega / 2 = %.6e)\n",
               modes.frequency_hz[axial], modes.damping_ratio[axial], expected);
   EXPECT_NEAR(modes.damping_ratio[axial], expected, 1e-3 * expected);
-  // Bending and torsion store (almost) nothing in Γ₁; bending keeps the shear's share (< 1 %).
+  // Bending and torsion store nothing in Γ₁; a bending mode keeps the share of its energy in
+  // the shear strains Γ₂, Γ₃ (damped by τ_ε too), Timoshenko's (k r)² E/(k_s G) ≈ 1.4 % for the
+  // eighth pair (k = 15π/2L, r = a/√12), less below it.
   for (Eigen::Index i = 0; i < kModes; ++i)
     if (i != axial)
-      EXPECT_LT(modes.damping_ratio[i], 0.01 * 0.5 * tau * modes.omega[i])
+      EXPECT_LT(modes.damping_ratio[i], 0.02 * 0.5 * tau * modes.omega[i])
           << "mode " << i + 1 << " at " << modes.frequency_hz[i] << " Hz";
 }
 
@@ -137,7 +139,12 @@ TEST(AncfBeamDamping, FreeDecayOfTheFirstBendingMode) {
               "%.5f)\n",
               found.modes[0].frequency, omega_eb / (2.0 * std::numbers::pi),
               found.modes[0].damping_ratio, 0.5 * tau * omega);
-  EXPECT_NEAR(omega, omega_eb, 2e-3 * omega_eb);
+  // The decay's frequency is the model's first (8 elements: +0.3 % above Euler–Bernoulli).
+  const ModalResult modes = CalcModes(model, model.initial_positions(), {.num_modes = 1});
+  ASSERT_TRUE(modes.converged) << modes.message;
+  std::printf("free decay: first mode of the model %.4f Hz\n", modes.frequency_hz[0]);
+  EXPECT_NEAR(omega, modes.omega[0], 1e-3 * modes.omega[0]);
+  EXPECT_NEAR(omega, omega_eb, 5e-3 * omega_eb);
   EXPECT_NEAR(found.modes[0].damping_ratio, 0.5 * tau * omega, 0.01 * 0.5 * tau * omega);
 
   // Most of the launch energy is dissipated, and the account keeps it.

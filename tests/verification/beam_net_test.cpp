@@ -7,9 +7,12 @@
 //    thread's weight). The beam net, settled by dynamic relaxation (mass-proportional Rayleigh
 //    damping), agrees with the cable net's static solution within 0.2 % and both with δ within
 //    1 % (Biot against Green strain and the threads' own sag differ by O(ε) ≈ 3e-3);
-//  - a 4 × 4 beam net dropped onto a sphere from a scene (contact with friction, Kelvin–Voigt
-//    damping of the beams): the balance kinetic + strain + gravity + dissipated stays within 1 %
-//    of the potential energy the net releases.
+//  - a 3 × 3 beam net dropped onto a sphere from a scene (Carvalho–Martins contact with tanh
+//    friction, Kelvin–Voigt damping of the beams, the midpoint rule, h = 0.25 ms, 0.2 s): the
+//    balance kinetic + strain + gravity + dissipated − work stays within 1 % of the potential
+//    energy the net releases (measured 0.10 %; with a ten times stiffer contact 0.8 %, and with
+//    generalised-α ρ∞ = 0.9, h = 1 ms, 6 %, as for the same net of cables: the contact's
+//    discretisation, not the beams).
 
 #include <gtest/gtest.h>
 
@@ -121,35 +124,35 @@ nets:
     type: square
     element: ancf_beam
     side: 0.6
-    meshes: 4
-    elements_per_thread: 2
+    meshes: 3
+    elements_per_thread: 1
     center: [0, 0, 0.33]
     material: nylon
     section: thread
     knot_model: ideal
     knot_mass: 0.002
 contact:
-  law: {type: carvalho_martins, stiffness: 1.0e6, restitution: 0.3}
+  law: {type: carvalho_martins, stiffness: 1.0e5, restitution: 0.3}
   friction: {type: tanh, static: 0.3, kinetic: 0.3, regularization_speed: 1.0e-2}
   points_per_element: 8
   targets:
     - {name: ball, type: sphere, center: [0, 0, 0], radius: 0.3}
 analysis:
   type: dynamic
-  spectral_radius: 0.9
-  time_step: 1.0e-3
-  end_time: 0.3
+  integrator: midpoint
+  time_step: 2.5e-4
+  end_time: 0.2
 )";
 
 TEST(BeamNet, BeamNetDroppedOnASphereKeepsItsEnergyBalance) {
   const Scene scene = ParseScene(kDropScene);
   const Model& model = scene.model;
-  ASSERT_EQ(model.beam_elements().size(), 40u * 2u);
+  ASSERT_EQ(model.beam_elements().size(), 24u);
   State state = MakeInitialState(model);
   double balance0 = 0.0, gravity0 = 0.0, released = 0.0, max_drift = 0.0, dissipated = 0.0;
   bool first = true;
   const SolveResult result = SolveDynamic(
-      model, scene.analysis.dynamics, 0.0,
+      model, scene.analysis.dynamics, scene.analysis.dynamics.time_step,
       [&](const State&, const EnergyAccount& e) {
         if (first) {
           balance0 = e.Balance();
