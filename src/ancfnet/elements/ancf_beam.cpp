@@ -178,19 +178,18 @@ double EvaluateBeam(const BeamElementParameters& p, const Vector24d& e, const Ve
 
   const GaussRule& axial = GetGaussRule(kAxialPoints);
   for (int k = 0; k < axial.size; ++k) {
-    StrainSet<1, 1> set;
-    set.maps[0] = MakeBeamLocalMap(axial.points[k], p.length);
-    set.strains[0] = {AxialStrain(MapToLocal(set.maps[0], e), h)};
+    const BeamLocalMap map = MakeBeamLocalMap(axial.points[k], p.length);
+    const StrainSet<1, 1> set{{map}, {{{AxialStrain(MapToLocal(map, e), h)}}}};
     const Eigen::Matrix<double, 1, 1> c(axial.weights[k] * p.length * p.axial_stiffness);
     const Eigen::Matrix<double, 1, 1> c_visc(p.axial_damping_time * c(0, 0));
     energy += AddStrainTerms(set, c, damped ? &c_visc : nullptr, e_dot, out);
   }
 
-  StrainSet<2, 3> penalties;
-  for (int k = 0; k < 2; ++k) {
-    penalties.maps[k] = MakeBeamLocalMap(k, p.length);
-    penalties.strains[k] = SectionPenaltyStrains(MapToLocal(penalties.maps[k], e), h);
-  }
+  const std::array<BeamLocalMap, 2> nodes = {MakeBeamLocalMap(0.0, p.length),
+                                              MakeBeamLocalMap(1.0, p.length)};
+  const StrainSet<2, 3> penalties{nodes,
+                                  {SectionPenaltyStrains(MapToLocal(nodes[0], e), h),
+                                   SectionPenaltyStrains(MapToLocal(nodes[1], e), h)}};
   const double w = 0.5 * p.length;
   const Eigen::Matrix<double, 6, 1> penalty_stiffness =
       (Eigen::Matrix<double, 6, 1>() << p.section_normal_stiffness, p.section_normal_stiffness,
@@ -201,14 +200,17 @@ double EvaluateBeam(const BeamElementParameters& p, const Vector24d& e, const Ve
                            nullptr, e_dot, out);
 
   const GaussRule& section = GetGaussRule(kSectionPoints);
-  StrainSet<kSectionPoints, kRawPerPoint> sections;
-  for (int k = 0; k < kSectionPoints; ++k) {
-    sections.maps[k] = MakeBeamLocalMap(section.points[k], p.length);
-    sections.strains[k] = SectionStrains(MapToLocal(sections.maps[k], e), h);
-  }
+  static_assert(kSectionPoints == 2);
+  const std::array<BeamLocalMap, kSectionPoints> points = {
+      MakeBeamLocalMap(section.points[0], p.length), MakeBeamLocalMap(section.points[1], p.length)};
+  // Built in place: a strain jet holds an 18 × 18 Hessian, too big to copy around.
+  const StrainSet<kSectionPoints, kRawPerPoint> sections{
+      points,
+      {SectionStrains(MapToLocal(points[0], e), h), SectionStrains(MapToLocal(points[1], e), h)}};
+  const RawMatrix c = SectionEnergyMatrix(p, 1.0, 1.0);
+  if (!damped) return energy + AddStrainTerms(sections, c, nullptr, e_dot, out);
   const RawMatrix c_visc = SectionEnergyMatrix(p, p.axial_damping_time, p.bending_damping_time);
-  return energy + AddStrainTerms(sections, SectionEnergyMatrix(p, 1.0, 1.0),
-                                 damped ? &c_visc : nullptr, e_dot, out);
+  return energy + AddStrainTerms(sections, c, &c_visc, e_dot, out);
 }
 
 }  // namespace
