@@ -150,19 +150,18 @@ TEST(TimeLoopAllocation, GeneralizedAlphaWithDampedBeams) {
   drawn.axial_damping_time = drawn.bending_damping_time = tau;
   ModelBuilder builder;
   builder.SetGravity(Vector3d(0.0, 0.0, -9.81));
-  builder.AddCable(
-      {.name = "pendulum",
-       .start = Vector3d::Zero(),
-       .end = Vector3d(1.0, 0.0, 0.0),
-       .num_elements = 8,
-       .properties = drawn,
-       .beam = BeamCableSpec{.material = {.youngs_modulus = 2e9,
-                                          .poisson_ratio = 0.3,
-                                          .density = 1000.0,
-                                          .axial_damping_time = tau,
-                                          .bending_damping_time = tau},
-                             .section = MakeCircleBeamSection(0.01, 0.3),
-                             .orientation = Vector3d::UnitZ()}});
+  builder.AddCable({.name = "pendulum",
+                    .start = Vector3d::Zero(),
+                    .end = Vector3d(1.0, 0.0, 0.0),
+                    .num_elements = 8,
+                    .properties = drawn,
+                    .beam = BeamCableSpec{.material = {.youngs_modulus = 2e9,
+                                                       .poisson_ratio = 0.3,
+                                                       .density = 1000.0,
+                                                       .axial_damping_time = tau,
+                                                       .bending_damping_time = tau},
+                                          .section = MakeCircleBeamSection(0.01, 0.3),
+                                          .orientation = Vector3d::UnitZ()}});
   builder.AddPin({"pendulum", 0.0});
   const Model model = builder.Build();
   DynamicSettings settings;

@@ -46,10 +46,9 @@ ModelBuilder MakeDampedCantilever(double axial_time, double bending_time, int el
                     .end = Vector3d(kLength, 0.0, 0.0),
                     .num_elements = elements,
                     .properties = drawn,
-                    .beam = BeamCableSpec{
-                        .material = aluminium,
-                        .section = MakeRectangleBeamSection(kSide, kSide, 0.33),
-                        .orientation = Vector3d::UnitY()}});
+                    .beam = BeamCableSpec{.material = aluminium,
+                                          .section = MakeRectangleBeamSection(kSide, kSide, 0.33),
+                                          .orientation = Vector3d::UnitY()}});
   builder.AddClamp({"bar", 0.0});
   return builder;
 }
@@ -83,9 +82,10 @@ TEST(AncfBeamDamping, EqualRetardationTimesDampEveryModeByTauOmegaOverTwo) {
     EXPECT_NEAR(modes.damping_ratio[i], expected, 1e-3 * expected)
         << "mode " << i + 1 << " at " << modes.frequency_hz[i] << " Hz";
   }
-  std::printf("tau_eps = tau_kappa: %d modes up to %.1f Hz, largest |zeta / (tau omega / 2) - 1| "
-              "%.2e\n",
-              kModes, modes.frequency_hz[kModes - 1], worst);
+  std::printf(
+      "tau_eps = tau_kappa: %d modes up to %.1f Hz, largest |zeta / (tau omega / 2) - 1| "
+      "%.2e\n",
+      kModes, modes.frequency_hz[kModes - 1], worst);
 }
 
 TEST(AncfBeamDamping, AxialRetardationTimeDampsTheAxialMode) {
@@ -95,8 +95,8 @@ TEST(AncfBeamDamping, AxialRetardationTimeDampsTheAxialMode) {
   ASSERT_TRUE(modes.converged) << modes.message;
   const Eigen::Index axial = NearestMode(modes, AxialFrequency());
   const double expected = 0.5 * tau * modes.omega[axial];
-  std::printf("axial mode %.1f Hz: zeta %.6e (tau omega / 2 = %.6e)\n",
-              modes.frequency_hz[axial], modes.damping_ratio[axial], expected);
+  std::printf("axial mode %.1f Hz: zeta %.6e (tau omega / 2 = %.6e)\n", modes.frequency_hz[axial],
+              modes.damping_ratio[axial], expected);
   EXPECT_NEAR(modes.damping_ratio[axial], expected, 1e-3 * expected);
   // Bending and torsion store nothing in Γ₁; a bending mode keeps the share of its energy in
   // the shear strains Γ₂, Γ₃ (damped by τ_ε too), Timoshenko's (k r)² E/(k_s G) ≈ 1.4 % for the
@@ -141,10 +141,11 @@ TEST(AncfBeamDamping, FreeDecayOfTheFirstBendingMode) {
   const double omega_eb =
       1.87510407 * 1.87510407 * std::sqrt(ei / (kDensity * kSide * kSide)) / (kLength * kLength);
   const double omega = 2.0 * std::numbers::pi * found.modes[0].frequency;
-  std::printf("free decay: f1 %.4f Hz (Euler-Bernoulli %.4f Hz), zeta1 %.5f (tau omega / 2 = "
-              "%.5f)\n",
-              found.modes[0].frequency, omega_eb / (2.0 * std::numbers::pi),
-              found.modes[0].damping_ratio, 0.5 * tau * omega);
+  std::printf(
+      "free decay: f1 %.4f Hz (Euler-Bernoulli %.4f Hz), zeta1 %.5f (tau omega / 2 = "
+      "%.5f)\n",
+      found.modes[0].frequency, omega_eb / (2.0 * std::numbers::pi), found.modes[0].damping_ratio,
+      0.5 * tau * omega);
   // The decay's frequency is the model's first (8 elements: +0.3 % above Euler–Bernoulli).
   const ModalResult modes = CalcModes(model, model.initial_positions(), {.num_modes = 1});
   ASSERT_TRUE(modes.converged) << modes.message;

@@ -104,9 +104,10 @@ TEST(BeamNet, CrossOfBeamThreadsSagsLikeTheCableCrossInTheBendingFreeLimit) {
   const double expected = CrossSag();
   const double cable_sag = CentreSag(cables, cable_state);
   const double beam_sag = CentreSag(beams, beam_state);
-  std::printf("cross: sag of the beam net %.6f m, of the cable net %.6f m, bending-free %.6f m; "
-              "kinetic energy left %.2e J\n",
-              beam_sag, cable_sag, expected, kinetic);
+  std::printf(
+      "cross: sag of the beam net %.6f m, of the cable net %.6f m, bending-free %.6f m; "
+      "kinetic energy left %.2e J\n",
+      beam_sag, cable_sag, expected, kinetic);
   EXPECT_LT(kinetic, 1e-9 * kKnotMass * kGravity * expected);  // at rest
   EXPECT_NEAR(beam_sag, cable_sag, 2e-3 * cable_sag);
   EXPECT_NEAR(cable_sag, expected, 1e-2 * expected);

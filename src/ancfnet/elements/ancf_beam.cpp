@@ -186,7 +186,7 @@ double EvaluateBeam(const BeamElementParameters& p, const Vector24d& e, const Ve
   }
 
   const std::array<BeamLocalMap, 2> nodes = {MakeBeamLocalMap(0.0, p.length),
-                                              MakeBeamLocalMap(1.0, p.length)};
+                                             MakeBeamLocalMap(1.0, p.length)};
   const StrainSet<2, 3> penalties{nodes,
                                   {SectionPenaltyStrains(MapToLocal(nodes[0], e), h),
                                    SectionPenaltyStrains(MapToLocal(nodes[1], e), h)}};

@@ -40,8 +40,8 @@ struct BeamElementParameters {
 struct BeamForceOutputs {
   Vector24d* force = nullptr;  ///< Q = ∂U/∂e + Q_visc (N), the internal generalised force
   Vector24d* viscous_force = nullptr;  ///< the Kelvin–Voigt part Q_visc alone (N)
-  Matrix24d* stiffness = nullptr;      ///< ∂Q/∂e; = ∂²U/∂e², symmetric, when undamped or at rest
-  Matrix24d* damping = nullptr;        ///< ∂Q/∂ė = Σ τᵢ kᵢ ∇sᵢ ∇sᵢᵀ, constant in ė (N s/m)
+  Matrix24d* stiffness = nullptr;  ///< ∂Q/∂e; = ∂²U/∂e², symmetric, when undamped or at rest
+  Matrix24d* damping = nullptr;  ///< ∂Q/∂ė = Σ τᵢ kᵢ ∇sᵢ ∇sᵢᵀ, constant in ė (N s/m)
 };
 
 /// Internal generalised force Q = ∂U/∂e + Q_visc of the element and, when asked, its exact

@@ -41,8 +41,7 @@ void CalcElementForces(const Model& model, const VectorXd& q, const VectorXd& v,
   const Index num_beams = static_cast<Index>(beams.size());
 #pragma omp parallel for schedule(static) if (beams.size() >= kParallelElements)
   for (Index b = 0; b < num_beams; ++b)
-    CalcBeamInternalForce(beams[b].parameters, model.Gather(beams[b], q),
-                          model.Gather(beams[b], v),
+    CalcBeamInternalForce(beams[b].parameters, model.Gather(beams[b], q), model.Gather(beams[b], v),
                           {.force = &ws.beam_force[b],
                            .viscous_force = &ws.beam_viscous_force[b],
                            .stiffness = stiffness ? &ws.beam_stiffness[b] : nullptr,

@@ -232,9 +232,10 @@ void ReadNet(const YamlValue& item, const Library& library, ModelBuilder* builde
     // Beam threads (io/beam_reader.hpp): the net's material and section, no rope settings.
     for (const char* key : {"tension_only", "rope_smoothing_strain", "bending"})
       if (auto v = map.Find(key))
-        v->Fail(fmt::format("{} is for cable threads; beam threads (element: ancf_beam) are "
-                            "elastic in tension and compression",
-                            key));
+        v->Fail(
+            fmt::format("{} is for cable threads; beam threads (element: ancf_beam) are "
+                        "elastic in tension and compression",
+                        key));
     spec.beam_threads = ReadBeamMaterialAndSection(map, library);
     spec.thread =
         MakeCableProperties(ReadMaterial(map, map, library), ReadSection(map, map, library));

@@ -27,7 +27,6 @@ void ValidateProperties(const CableProperties& p) {
     if (n < 1 || n > 8) throw InputError(fmt::format("Gauss points must be 1 … 8 (got {})", n));
 }
 
-
 // The properties of a beam's centre line (model.hpp, CableElement): EA, the smaller EI, ρA; the
 // drawing radius of `drawn`. A beam has no rope law, and its Kelvin–Voigt damping is the beam
 // material's (the centre line is undamped: the beam kernel damps): both refused in `drawn`
@@ -53,7 +52,6 @@ CableProperties MakeBeamCentreLineProperties(const CableSpec& spec) {
   return properties;
 }
 
-
 }  // namespace
 
 Index ModelBuilder::EndPositionDof(const std::string& knot, const Vector3d& position,
@@ -74,9 +72,9 @@ Index ModelBuilder::EndPositionDof(const std::string& knot, const Vector3d& posi
 CableNode ModelBuilder::ContinuedNode(const CableSpec& spec, const Vector3d& slope,
                                       const BeamSectionFrame* frame) const {
   if (!spec.start_knot.empty())
-    throw InputError(fmt::format(
-        "cable '{}' cannot both continue cable '{}' and start at knot '{}'", spec.name,
-        spec.start_cable, spec.start_knot));
+    throw InputError(
+        fmt::format("cable '{}' cannot both continue cable '{}' and start at knot '{}'", spec.name,
+                    spec.start_cable, spec.start_knot));
   const Cable& earlier = model_.cables_[model_.FindCable(spec.start_cable)];
   const CableNode node = model_.nodes_[earlier.first_node + earlier.num_elements];
   const VectorXd& q0 = model_.initial_positions_;
@@ -91,9 +89,9 @@ CableNode ModelBuilder::ContinuedNode(const CableSpec& spec, const Vector3d& slo
   if (frame != nullptr && node.section_dof >= 0 &&
       ((q0.segment<3>(node.section_dof) - frame->d2).norm() > 1e-9 ||
        (q0.segment<3>(node.section_dof + 3) - frame->d3).norm() > 1e-9))
-    throw InputError(fmt::format(
-        "beam '{}' continues beam '{}' but its orientation gives another section frame",
-        spec.name, spec.start_cable));
+    throw InputError(
+        fmt::format("beam '{}' continues beam '{}' but its orientation gives another section frame",
+                    spec.name, spec.start_cable));
   return node;
 }
 
@@ -127,8 +125,7 @@ Index ModelBuilder::AddCable(const CableSpec& spec) {
   // length L: a unit tangent when stress-free.
   const Vector3d slope = (spec.end - spec.start) / length;
   std::optional<CableNode> continued;
-  if (!spec.start_cable.empty())
-    continued = ContinuedNode(spec, slope, frame ? &*frame : nullptr);
+  if (!spec.start_cable.empty()) continued = ContinuedNode(spec, slope, frame ? &*frame : nullptr);
 
   Cable cable;
   cable.name = spec.name;

@@ -1,8 +1,9 @@
 #pragma once
 /// @file Builds a net into a model from its design: knots and threads of a NetTopology
-/// (model/net_topology.hpp), one ANCF cable (or beam) per thread, knots ideal (threads share the knot's
-/// position coordinates) or compliant (a knot mass joined to each thread end by a spring-damper,
-/// the model of the seed paper), corner masses ("bullets") and a packed initial state.
+/// (model/net_topology.hpp), one ANCF cable (or beam) per thread, knots ideal (threads share the
+/// knot's position coordinates) or compliant (a knot mass joined to each thread end by a
+/// spring-damper, the model of the seed paper), corner masses ("bullets") and a packed initial
+/// state.
 
 #include <limits>
 #include <optional>

@@ -186,8 +186,8 @@ TEST(SelfContact, CrossingBeamsTouchLikeCrossingCables) {
   for (Index n = 0; n < cables.num_nodes(); ++n) {
     const CableNode& c = cables.nodes()[n];
     const CableNode& b = beams.nodes()[n];
-    for (const auto& [dof_c, dof_b] : {std::pair{c.position_dof, b.position_dof},
-                                       std::pair{c.slope_dof, b.slope_dof}})
+    for (const auto& [dof_c, dof_b] :
+         {std::pair{c.position_dof, b.position_dof}, std::pair{c.slope_dof, b.slope_dof}})
       EXPECT_LT((force_b.segment<3>(dof_b) - force_c.segment<3>(dof_c)).norm(),
                 1e-9 * force_c.norm())
           << "node " << n;
