@@ -162,7 +162,9 @@ TEST(BeamCable, NetOfBeamThreadsWithCompliantKnots) {
                 1e-12);
     }
   }
-  spec.thread_designs.assign(12, ThreadDesign{.properties = Rod()});
+  ThreadDesign own;
+  own.properties = Rod();
+  spec.thread_designs.assign(12, own);
   ModelBuilder builder;
   ExpectInputError([&] { AddNet(builder, spec); }, "beam threads");
 }
