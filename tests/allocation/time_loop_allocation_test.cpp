@@ -142,6 +142,45 @@ TEST(TimeLoopAllocation, ImplicitMidpointWithRayleighAndModalDamping) {
   EXPECT_EQ(count, 0) << "heap requests in 40 midpoint steps with damping models";
 }
 
+// A pendulum of ANCF beam elements with Kelvin–Voigt damping (issue 13): the beam kernel's force,
+// viscous force, stiffness and damping matrix every iteration.
+TEST(TimeLoopAllocation, GeneralizedAlphaWithDampedBeams) {
+  const double tau = 1e-3;
+  CableProperties drawn;
+  drawn.axial_damping_time = drawn.bending_damping_time = tau;
+  ModelBuilder builder;
+  builder.SetGravity(Vector3d(0.0, 0.0, -9.81));
+  builder.AddCable({.name = "pendulum",
+                    .start = Vector3d::Zero(),
+                    .end = Vector3d(1.0, 0.0, 0.0),
+                    .num_elements = 8,
+                    .properties = drawn,
+                    .beam = BeamCableSpec{.material = {.youngs_modulus = 2e9,
+                                                       .poisson_ratio = 0.3,
+                                                       .density = 1000.0,
+                                                       .axial_damping_time = tau,
+                                                       .bending_damping_time = tau},
+                                          .section = MakeCircleBeamSection(0.01, 0.3),
+                                          .orientation = Vector3d::UnitZ()}});
+  builder.AddPin({"pendulum", 0.0});
+  const Model model = builder.Build();
+  DynamicSettings settings;
+  settings.jacobian_update = JacobianUpdate::kEveryIteration;
+  GeneralizedAlphaIntegrator integrator(model, settings);
+  State state = MakeInitialState(model);
+  ASSERT_TRUE(integrator.Initialize(&state));
+  EnergyTracker energy(model, integrator.workspace(), state, 1.0,
+                       GeneralizedAlphaIntegrator::kEnergyQuadrature);
+  ASSERT_TRUE(integrator.Step(1e-3, &state).accepted);
+  const long count = CountAllocations([&] {
+    for (int i = 0; i < 40; ++i) {
+      EXPECT_TRUE(integrator.Step(i % 10 < 5 ? 1e-3 : 5e-4, &state).accepted);
+      energy.Advance(model, integrator.workspace(), state, 1.0);
+    }
+  });
+  EXPECT_EQ(count, 0) << "heap requests in 40 generalised-α steps of damped beams";
+}
+
 // A spinning free body with the flexible pendulum's cable tied to it (gyroscopic term,
 // attachment forces and Jacobians, the rotation rebase every step).
 template <class Integrator>

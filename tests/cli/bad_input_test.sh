@@ -178,8 +178,17 @@ expect_scene_error beam_no_orientation "- name: bar" "'orientation'" "missing re
 mutate beam_section_without_inertia 's/bar: {shape: rectangle, width: 0.01, height: 0.01}/bar: {shape: general, area: 1.0e-4, second_moment: 8.3e-10}/'
 expect_scene_error beam_section_without_inertia "bar: {shape: general" "second_moment_y" "ancf_beam needs"
 
-mutate beam_with_kelvin_voigt 's/poisson_ratio: 0.33/poisson_ratio: 0.33, axial_damping_time: 1.0e-3/'
-expect_scene_error beam_with_kelvin_voigt "- name: bar" "bar" "Kelvin"
+mutate beam_as_rope 's/    element: ancf_beam/    element: ancf_beam\n    tension_only: true/'
+expect_scene_error beam_as_rope "- name: bar" "bar" "rope law"
+
+# A net of beam threads (element: ancf_beam on a net) keeps no rope settings.
+beam_scene="$scene"
+scene="$root/examples/net_drop_sphere.yaml"
+mutate beam_net_with_rope_key 's/    knot_model: ideal/    knot_model: ideal\n    element: ancf_beam/'
+expect_scene_error beam_net_with_rope_key "tension_only: false" "tension_only" "beam threads"
+mutate beam_net_without_poisson 's/    knot_model: ideal/    knot_model: ideal\n    element: ancf_beam/; /tension_only: false/d'
+expect_scene_error beam_net_without_poisson "    material: thread" "material" "poisson_ratio"
+scene="$beam_scene"
 
 # Command-line mistakes.
 status=0

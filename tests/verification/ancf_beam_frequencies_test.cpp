@@ -46,7 +46,7 @@ std::vector<Mode> CalcModes() {
     Matrix24d element_stiffness;
     const int offset = kBeamNodeDofs * el;
     CalcBeamInternalForce(chain.element, chain.q.segment<kBeamElementDofs>(offset),
-                          {.stiffness = &element_stiffness});
+                          Vector24d::Zero(), {.stiffness = &element_stiffness});
     k.block<kBeamElementDofs, kBeamElementDofs>(offset, offset) += element_stiffness;
     m.block<kBeamElementDofs, kBeamElementDofs>(offset, offset) += element_mass;
   }

@@ -59,7 +59,7 @@ inline void SolveBeamStatics(BeamChain& chain, const std::vector<int>& fixed, co
         Vector24d f;
         Matrix24d k;
         CalcBeamInternalForce(chain.element, chain.q.segment<kBeamElementDofs>(offset),
-                              {.force = &f, .stiffness = &k});
+                              Vector24d::Zero(), {.force = &f, .stiffness = &k});
         residual.segment<kBeamElementDofs>(offset) += f;
         for (int i = 0; i < kBeamElementDofs; ++i)
           for (int j = 0; j < kBeamElementDofs; ++j)

@@ -20,7 +20,6 @@ enum RawStrain : int { kG2 = 0, kG3, kG2x, kG3x, kK1, kK2, kK3 };
 // Generalised strains at one section point: Γ₂, Γ₃, K₁, K₂, K₃, δ₂, δ₃.
 constexpr int kGeneralisedPerPoint = 7;
 
-using RawVector = Eigen::Matrix<double, kRawSize, 1>;
 using RawMatrix = Eigen::Matrix<double, kRawSize, kRawSize>;
 
 // Γ₁ = r'·(d₂ × d₃) / (|d₂| |d₃|) − 1 (eq. B4).
@@ -67,8 +66,11 @@ std::array<StrainJet, 3> SectionPenaltyStrains(const BeamLocalVector& u, bool h)
 // The energy of the section points is ½ Rᵀ C R in the raw strains R of both points, with
 // C = Aᵀ W D A: A maps R to the generalised strains Γ₂, Γ₃, K₁, K₂, K₃ and the shear remainders
 // δ₂ = −Γ₃' + ΔΓ₃/Δx, δ₃ = Γ₂' − ΔΓ₂/Δx (eq. B10); D is the section stiffness (EI_y, EI_z for
-// the remainders) and W the Gauss weights.
-RawMatrix SectionEnergyMatrix(const BeamElementParameters& p) {
+// the remainders) and W the Gauss weights. The force strains Γ₂, Γ₃ are scaled by
+// `force_scale`, the moment strains by `moment_scale`: (1, 1) gives C, (τ_ε, τ_κ) the
+// Kelvin–Voigt matrix C_v of the rates (eq. B14).
+RawMatrix SectionEnergyMatrix(const BeamElementParameters& p, double force_scale,
+                              double moment_scale) {
   const GaussRule& rule = GetGaussRule(kSectionPoints);
   const double dx = p.length * (rule.points[1] - rule.points[0]);
   Eigen::Matrix<double, kSectionPoints * kGeneralisedPerPoint, kRawSize> a;
@@ -88,109 +90,138 @@ RawMatrix SectionEnergyMatrix(const BeamElementParameters& p) {
     a(row + 6, col + kG2x) = 1.0;  // δ₃
     a(row + 6, kG2) = 1.0 / dx;
     a(row + 6, kRawPerPoint + kG2) = -1.0 / dx;
-    wd.segment<kGeneralisedPerPoint>(row) << p.shear_stiffness_y, p.shear_stiffness_z,
-        p.torsional_stiffness, p.bending_stiffness_y, p.bending_stiffness_z, p.bending_stiffness_y,
-        p.bending_stiffness_z;
+    wd.segment<kGeneralisedPerPoint>(row) << force_scale * p.shear_stiffness_y,
+        force_scale * p.shear_stiffness_z, moment_scale * p.torsional_stiffness,
+        moment_scale * p.bending_stiffness_y, moment_scale * p.bending_stiffness_z,
+        moment_scale * p.bending_stiffness_y, moment_scale * p.bending_stiffness_z;
     wd.segment<kGeneralisedPerPoint>(row) *= rule.weights[k] * p.length;
   }
   return a.transpose() * wd.asDiagonal() * a;
 }
 
-// Adds to `out` the force Σᵢ σᵢ ∇sᵢ and the stress part Σᵢ σᵢ ∇²sᵢ of the stiffness of strains
-// sᵢ sampled at one point, given their energy conjugates σᵢ; returns the gradients ∇sᵢ with
-// respect to e (columns) when the stiffness is asked for.
-template <int kCount>
-Eigen::Matrix<double, kBeamElementDofs, kCount> AddStressTerms(
-    const BeamLocalMap& map, const std::array<StrainJet, kCount>& s, const double* sigma,
-    const BeamForceOutputs& out) {
-  BeamLocalVector g_u = BeamLocalVector::Zero();
-  BeamLocalMatrix h_u = BeamLocalMatrix::Zero();
-  Eigen::Matrix<double, kBeamElementDofs, kCount> grads =
-      Eigen::Matrix<double, kBeamElementDofs, kCount>::Zero();
-  for (int i = 0; i < kCount; ++i) {
-    g_u += sigma[i] * s[i].grad;
-    if (out.stiffness) {
-      h_u += sigma[i] * s[i].hess;
-      grads.col(i) = MapToNodal(map, s[i].grad);
+// Strains sampled at `kPoints` points of the axis, `kPerPoint` at each, with the maps of the
+// points.
+template <int kPoints, int kPerPoint>
+struct StrainSet {
+  static constexpr int kSize = kPoints * kPerPoint;
+  using Matrix = Eigen::Matrix<double, kSize, kSize>;
+  std::array<BeamLocalMap, kPoints> maps;
+  std::array<std::array<StrainJet, kPerPoint>, kPoints> strains;
+};
+
+// For strains s with the energy ½ sᵀ C s and the Kelvin–Voigt stresses C_v ṡ (c_visc null:
+// undamped), adds to `out` the force Σ σᵢ ∇sᵢ with σ = C s + C_v ṡ, its viscous part, the
+// stiffness Σ σᵢ ∇²sᵢ + G C Gᵀ + G C_v Ṡᵀ and the damping G C_v Gᵀ, where G = [∇sᵢ] and
+// Ṡ = [∇ṡᵢ], ∇ṡᵢ = ∇²sᵢ ė (eq. B14, B15); returns ½ sᵀ C s.
+template <int kPoints, int kPerPoint>
+double AddStrainTerms(const StrainSet<kPoints, kPerPoint>& set,
+                      const typename StrainSet<kPoints, kPerPoint>::Matrix& c,
+                      const typename StrainSet<kPoints, kPerPoint>::Matrix* c_visc,
+                      const Vector24d& e_dot, const BeamForceOutputs& out) {
+  constexpr int n = StrainSet<kPoints, kPerPoint>::kSize;
+  using Vector = Eigen::Matrix<double, n, 1>;
+  using Gradients = Eigen::Matrix<double, kBeamElementDofs, n>;
+  const bool gradients = out.stiffness || (out.damping && c_visc);
+  std::array<BeamLocalVector, kPoints> u_dot;
+  Vector raw, rate = Vector::Zero();
+  for (int k = 0; k < kPoints; ++k) {
+    if (c_visc) u_dot[k] = MapToLocal(set.maps[k], e_dot);
+    for (int i = 0; i < kPerPoint; ++i) {
+      const StrainJet& s = set.strains[k][i];
+      raw[kPerPoint * k + i] = s.value;
+      if (c_visc) rate[kPerPoint * k + i] = s.grad.dot(u_dot[k]);
     }
   }
-  if (out.force) *out.force += MapToNodal(map, g_u);
-  if (out.stiffness) AddMappedHessian(map, h_u, *out.stiffness);
-  return grads;
-}
-
-// Strains with a diagonal stiffness at one point: U += ½ Σ kᵢ sᵢ², with the material part
-// Σ kᵢ ∇sᵢ ∇sᵢᵀ of the stiffness.
-template <int kCount>
-double AddDiagonalTerms(const BeamLocalMap& map, const std::array<StrainJet, kCount>& s,
-                        const std::array<double, kCount>& k, const BeamForceOutputs& out) {
-  std::array<double, kCount> sigma;
-  double energy = 0.0;
-  for (int i = 0; i < kCount; ++i) {
-    sigma[i] = k[i] * s[i].value;
-    energy += 0.5 * sigma[i] * s[i].value;
+  const Vector sigma_elastic = c * raw;
+  const Vector sigma_visc = c_visc ? Vector(*c_visc * rate) : Vector::Zero();
+  const Vector sigma = sigma_elastic + sigma_visc;
+  Gradients grads, rate_grads;
+  for (int k = 0; k < kPoints; ++k) {
+    const BeamLocalMap& map = set.maps[k];
+    BeamLocalVector g_u = BeamLocalVector::Zero();
+    BeamLocalVector g_visc_u = BeamLocalVector::Zero();
+    BeamLocalMatrix h_u;
+    if (out.stiffness) h_u.setZero();
+    for (int i = 0; i < kPerPoint; ++i) {
+      const StrainJet& s = set.strains[k][i];
+      const int j = kPerPoint * k + i;
+      g_u += sigma[j] * s.grad;
+      if (c_visc) g_visc_u += sigma_visc[j] * s.grad;
+      if (gradients) grads.col(j) = MapToNodal(map, s.grad);
+      if (out.stiffness) {
+        h_u += sigma[j] * s.hess;
+        if (c_visc) rate_grads.col(j) = MapToNodal(map, s.hess * u_dot[k]);
+      }
+    }
+    if (out.force) *out.force += MapToNodal(map, g_u);
+    if (out.viscous_force && c_visc) *out.viscous_force += MapToNodal(map, g_visc_u);
+    if (out.stiffness) AddMappedHessian(map, h_u, *out.stiffness);
   }
-  const auto grads = AddStressTerms<kCount>(map, s, sigma.data(), out);
-  if (out.stiffness)
-    for (int i = 0; i < kCount; ++i)
-      out.stiffness->noalias() += k[i] * grads.col(i) * grads.col(i).transpose();
-  return energy;
+  if (out.stiffness) {
+    out.stiffness->noalias() += grads * c * grads.transpose();
+    if (c_visc) out.stiffness->noalias() += grads * (*c_visc) * rate_grads.transpose();
+  }
+  if (out.damping && c_visc) out.damping->noalias() += grads * (*c_visc) * grads.transpose();
+  return 0.5 * raw.dot(sigma_elastic);
 }
 
-// The strain energy and, as `out` asks, its gradient and Hessian.
-double EvaluateBeam(const BeamElementParameters& p, const Vector24d& e,
+// The strain energy and, as `out` asks, the force and its Jacobians at (e, ė).
+double EvaluateBeam(const BeamElementParameters& p, const Vector24d& e, const Vector24d& e_dot,
                     const BeamForceOutputs& out) {
-  if (out.force) out.force->setZero();
-  if (out.stiffness) out.stiffness->setZero();
+  for (Vector24d* v : {out.force, out.viscous_force})
+    if (v) v->setZero();
+  for (Matrix24d* m : {out.stiffness, out.damping})
+    if (m) m->setZero();
   const bool h = out.stiffness != nullptr;
+  const bool damped = p.axial_damping_time > 0.0 || p.bending_damping_time > 0.0;
   double energy = 0.0;
 
   const GaussRule& axial = GetGaussRule(kAxialPoints);
   for (int k = 0; k < axial.size; ++k) {
     const BeamLocalMap map = MakeBeamLocalMap(axial.points[k], p.length);
-    energy += AddDiagonalTerms<1>(map, {AxialStrain(MapToLocal(map, e), h)},
-                                  {axial.weights[k] * p.length * p.axial_stiffness}, out);
+    const StrainSet<1, 1> set{{map}, {{{AxialStrain(MapToLocal(map, e), h)}}}};
+    const Eigen::Matrix<double, 1, 1> c(axial.weights[k] * p.length * p.axial_stiffness);
+    const Eigen::Matrix<double, 1, 1> c_visc(p.axial_damping_time * c(0, 0));
+    energy += AddStrainTerms(set, c, damped ? &c_visc : nullptr, e_dot, out);
   }
 
-  for (const double xi : {0.0, 1.0}) {
-    const BeamLocalMap map = MakeBeamLocalMap(xi, p.length);
-    const double w = 0.5 * p.length;
-    energy += AddDiagonalTerms<3>(map, SectionPenaltyStrains(MapToLocal(map, e), h),
-                                  {w * p.section_normal_stiffness, w * p.section_normal_stiffness,
-                                   w * p.section_shear_stiffness},
-                                  out);
-  }
+  const std::array<BeamLocalMap, 2> nodes = {MakeBeamLocalMap(0.0, p.length),
+                                             MakeBeamLocalMap(1.0, p.length)};
+  const StrainSet<2, 3> penalties{nodes,
+                                  {SectionPenaltyStrains(MapToLocal(nodes[0], e), h),
+                                   SectionPenaltyStrains(MapToLocal(nodes[1], e), h)}};
+  const double w = 0.5 * p.length;
+  const Eigen::Matrix<double, 6, 1> penalty_stiffness =
+      (Eigen::Matrix<double, 6, 1>() << p.section_normal_stiffness, p.section_normal_stiffness,
+       p.section_shear_stiffness, p.section_normal_stiffness, p.section_normal_stiffness,
+       p.section_shear_stiffness)
+          .finished();
+  energy += AddStrainTerms(penalties, StrainSet<2, 3>::Matrix((w * penalty_stiffness).asDiagonal()),
+                           nullptr, e_dot, out);
 
   const GaussRule& section = GetGaussRule(kSectionPoints);
-  std::array<std::array<StrainJet, kRawPerPoint>, kSectionPoints> strains;
-  std::array<BeamLocalMap, kSectionPoints> maps;
-  RawVector raw;
-  for (int k = 0; k < kSectionPoints; ++k) {
-    maps[k] = MakeBeamLocalMap(section.points[k], p.length);
-    strains[k] = SectionStrains(MapToLocal(maps[k], e), h);
-    for (int i = 0; i < kRawPerPoint; ++i) raw[kRawPerPoint * k + i] = strains[k][i].value;
-  }
-  const RawMatrix c = SectionEnergyMatrix(p);
-  const RawVector sigma = c * raw;
-  Eigen::Matrix<double, kBeamElementDofs, kRawSize> grads;
-  for (int k = 0; k < kSectionPoints; ++k) {
-    const auto g =
-        AddStressTerms<kRawPerPoint>(maps[k], strains[k], sigma.data() + kRawPerPoint * k, out);
-    if (h) grads.middleCols<kRawPerPoint>(kRawPerPoint * k) = g;
-  }
-  if (h) out.stiffness->noalias() += grads * c * grads.transpose();
-  return energy + 0.5 * raw.dot(sigma);
+  static_assert(kSectionPoints == 2);
+  const std::array<BeamLocalMap, kSectionPoints> points = {
+      MakeBeamLocalMap(section.points[0], p.length), MakeBeamLocalMap(section.points[1], p.length)};
+  // Built in place: a strain jet holds an 18 × 18 Hessian, too big to copy around.
+  const StrainSet<kSectionPoints, kRawPerPoint> sections{
+      points,
+      {SectionStrains(MapToLocal(points[0], e), h), SectionStrains(MapToLocal(points[1], e), h)}};
+  const RawMatrix c = SectionEnergyMatrix(p, 1.0, 1.0);
+  if (!damped) return energy + AddStrainTerms(sections, c, nullptr, e_dot, out);
+  const RawMatrix c_visc = SectionEnergyMatrix(p, p.axial_damping_time, p.bending_damping_time);
+  return energy + AddStrainTerms(sections, c, &c_visc, e_dot, out);
 }
 
 }  // namespace
 
 void CalcBeamInternalForce(const BeamElementParameters& p, const Vector24d& e,
-                           const BeamForceOutputs& out) {
-  EvaluateBeam(p, e, out);
+                           const Vector24d& e_dot, const BeamForceOutputs& out) {
+  EvaluateBeam(p, e, e_dot, out);
 }
 
 double CalcBeamStrainEnergy(const BeamElementParameters& p, const Vector24d& e) {
-  return EvaluateBeam(p, e, {});
+  return EvaluateBeam(p, e, Vector24d::Zero(), {});
 }
 
 Matrix24d CalcBeamMassMatrix(const BeamElementParameters& p) {

@@ -28,22 +28,32 @@ struct BeamElementParameters {
   double mass_per_length = 0.0;   ///< ρA (kg/m), > 0
   double rotary_inertia_y = 0.0;  ///< ρ I_y = ∫ ρ z² dA (kg m), weighs |ḋ₃|², ≥ 0
   double rotary_inertia_z = 0.0;  ///< ρ I_z = ∫ ρ y² dA (kg m), weighs |ḋ₂|², ≥ 0
+  /// Kelvin–Voigt retardation times (s), ≥ 0, as for the cable (elements/ancf_cable.hpp): the
+  /// force strains Γ₁, Γ₂, Γ₃ carry EA (Γ₁ + τ_ε Γ̇₁), kGA (Γ + τ_ε Γ̇), the moment strains K₁,
+  /// K₂, K₃ (and the shear remainders in K̃) GJ (K₁ + τ_κ K̇₁), EI (K̃ + τ_κ K̃̇). The
+  /// cross-section penalties are undamped. A mode of strain s alone has ζ = τ ω / 2.
+  double axial_damping_time = 0.0;
+  double bending_damping_time = 0.0;
 };
 
 /// Which outputs CalcBeamInternalForce fills; null pointers are skipped.
 struct BeamForceOutputs {
-  Vector24d* force = nullptr;      ///< Q = ∂U/∂e (N), the internal generalised force
-  Matrix24d* stiffness = nullptr;  ///< ∂Q/∂e = ∂²U/∂e², symmetric
+  Vector24d* force = nullptr;  ///< Q = ∂U/∂e + Q_visc (N), the internal generalised force
+  Vector24d* viscous_force = nullptr;  ///< the Kelvin–Voigt part Q_visc alone (N)
+  Matrix24d* stiffness = nullptr;  ///< ∂Q/∂e; = ∂²U/∂e², symmetric, when undamped or at rest
+  Matrix24d* damping = nullptr;  ///< ∂Q/∂ė = Σ τᵢ kᵢ ∇sᵢ ∇sᵢᵀ, constant in ė (N s/m)
 };
 
-/// Internal generalised force Q = ∂U/∂e of the element and, when asked, its exact Jacobian, with
+/// Internal generalised force Q = ∂U/∂e + Q_visc of the element and, when asked, its exact
+/// Jacobians, with
 ///   U = ½ ∫₀ᴸ [EA Γ₁² + k_yGA Γ₂² + k_zGA Γ₃² + GJ K₁² + EI_y K̃₂² + EI_z K̃₃²
 ///              + cross-section penalties] dx,
 /// the Reissner strains Γ = Rᵀ r' − e₁, K = axial(Rᵀ R') written with the normalised directors
 /// (docs/theory.md, eq. B4–B9), Γ₂, Γ₃ sampled at the two Gauss points and their remainder moved
-/// into the curvatures K̃ (eq. B10). Outputs are overwritten, not accumulated.
+/// into the curvatures K̃ (eq. B10), and the Kelvin–Voigt force Q_visc = Σ τᵢ kᵢ ṡᵢ ∇sᵢ,
+/// ṡᵢ = ∇sᵢ·ė, over the same strains (eq. B14). Outputs are overwritten, not accumulated.
 void CalcBeamInternalForce(const BeamElementParameters& p, const Vector24d& e,
-                           const BeamForceOutputs& out);
+                           const Vector24d& e_dot, const BeamForceOutputs& out);
 
 /// Strain energy U (J) of the same integrals.
 double CalcBeamStrainEnergy(const BeamElementParameters& p, const Vector24d& e);

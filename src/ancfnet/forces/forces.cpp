@@ -42,9 +42,11 @@ void CalcElementForces(const Model& model, const VectorXd& q, const VectorXd& v,
   const Index num_beams = static_cast<Index>(beams.size());
 #pragma omp parallel for schedule(static) if (beams.size() >= kParallelElements)
   for (Index b = 0; b < num_beams; ++b)
-    CalcBeamInternalForce(beams[b].parameters, model.Gather(beams[b], q),
+    CalcBeamInternalForce(beams[b].parameters, model.Gather(beams[b], q), model.Gather(beams[b], v),
                           {.force = &ws.beam_force[b],
-                           .stiffness = stiffness ? &ws.beam_stiffness[b] : nullptr});
+                           .viscous_force = &ws.beam_viscous_force[b],
+                           .stiffness = stiffness ? &ws.beam_stiffness[b] : nullptr,
+                           .damping = damping ? &ws.beam_damping[b] : nullptr});
 }
 
 // The blocks a point moment acts on, each with its weight: the slope r' of a cable node; r_x,
@@ -95,8 +97,10 @@ void CalcInternalForces(const Model& model, const VectorXd& q, const VectorXd& v
     ScatterAdd(elements[e], ws.element_force[e], &ws.internal_force);
     ScatterAdd(elements[e], ws.element_viscous_force[e], &ws.viscous_force);
   }
-  for (std::size_t b = 0; b < model.beam_elements().size(); ++b)
+  for (std::size_t b = 0; b < model.beam_elements().size(); ++b) {
     ScatterAdd(model.beam_elements()[b], ws.beam_force[b], &ws.internal_force);
+    ScatterAdd(model.beam_elements()[b], ws.beam_viscous_force[b], &ws.viscous_force);
+  }
   AddLinkForces(model, q, v, ws);
   AddBodyForces(model, q, v, ws);
   AddClearanceJointForces(model, q, v, ws);
@@ -159,9 +163,11 @@ void AssembleIterationMatrix(const Model& model, const VectorXd& q, const Vector
   for (std::size_t b = 0; b < model.beam_elements().size(); ++b) {
     const Index beam = static_cast<Index>(b);
     ScatterAdd(model.beam_elements()[b], ws.beam_force[b], &ws.internal_force);
+    ScatterAdd(model.beam_elements()[b], ws.beam_viscous_force[b], &ws.viscous_force);
     matrix->AddBeamElementBlock(beam, ws.beam_stiffness[b], weights.stiffness);
     if (weights.mass != 0.0)
       matrix->AddBeamElementBlock(beam, ws.beam_rotary_mass[b], weights.mass);
+    if (need_damping) matrix->AddBeamElementBlock(beam, ws.beam_damping[b], weights.damping);
   }
   AddLinkForces(model, q, v, ws);
   AddLinkJacobians(model, q, v, weights, ws, matrix);

@@ -53,16 +53,13 @@ std::optional<double> ReadPoissonRatio(const YamlMap& material) {
   return nu;
 }
 
-std::optional<BeamCableSpec> ReadBeamCable(const YamlMap& cable, const Vector3d& axis,
-                                           const Library& library) {
-  const std::optional<YamlValue> element = cable.Find("element");
-  const bool beam = element && element->AsChoice({"cable", "ancf_beam"}) == 1;
-  if (!beam) {
-    if (auto v = cable.Find("orientation"))
-      v->Fail("orientation is for beams (element: ancf_beam)");
-    return std::nullopt;
-  }
-  const YamlValue material_key = cable.Get("material");
+bool ReadIsBeam(const YamlMap& map) {
+  const std::optional<YamlValue> element = map.Find("element");
+  return element && element->AsChoice({"cable", "ancf_beam"}) == 1;
+}
+
+BeamCableSpec ReadBeamMaterialAndSection(const YamlMap& map, const Library& library) {
+  const YamlValue material_key = map.Get("material");
   const YamlValue& material =
       Lookup(library.material_values, material_key, "material", "known materials");
   const std::optional<double> nu = ReadPoissonRatio(material.AsMap());
@@ -74,10 +71,25 @@ std::optional<BeamCableSpec> ReadBeamCable(const YamlMap& cable, const Vector3d&
   spec.material = {.youngs_modulus = material.AsMap().Get("youngs_modulus").AsPositive(),
                    .poisson_ratio = *nu,
                    .density = material.AsMap().Get("density").AsPositive()};
-  const YamlValue section_key = cable.Get("section");
+  for (const auto& [key, field] :
+       {std::pair{"axial_damping_time", &spec.material.axial_damping_time},
+        {"bending_damping_time", &spec.material.bending_damping_time}})
+    if (auto v = material.AsMap().Find(key)) *field = v->AsNonNegative();
+  const YamlValue section_key = map.Get("section");
   spec.section = ReadBeamSection(
       Lookup(library.section_values, section_key, "section", "known sections"),
       section_key.AsString(), *nu);
+  return spec;
+}
+
+std::optional<BeamCableSpec> ReadBeamCable(const YamlMap& cable, const Vector3d& axis,
+                                           const Library& library) {
+  if (!ReadIsBeam(cable)) {
+    if (auto v = cable.Find("orientation"))
+      v->Fail("orientation is for beams (element: ancf_beam)");
+    return std::nullopt;
+  }
+  BeamCableSpec spec = ReadBeamMaterialAndSection(cable, library);
   const YamlValue orientation = cable.Get("orientation");
   spec.orientation = orientation.AsVector3();
   orientation.Locate([&] { MakeBeamSectionFrame(axis, spec.orientation); });

@@ -9,6 +9,7 @@
 
 #include <unistd.h>
 
+#include "ancfnet/io/beam_reader.hpp"
 #include "ancfnet/io/connection_law_reader.hpp"
 #include "ancfnet/io/slender_cables.hpp"
 #include "ancfnet/model/net_builder.hpp"
@@ -218,7 +219,8 @@ void ReadNet(const YamlValue& item, const Library& library, ModelBuilder* builde
                                         "bullets",
                                         "thread_breaking_force",
                                         "link_breaking_force",
-                                        "tether"};
+                                        "tether",
+                                        "element"};
   if (type == 2)
     keys.insert(keys.end(), {"knot_positions", "threads", "perimeter", "axis"});
   else
@@ -237,7 +239,19 @@ void ReadNet(const YamlValue& item, const Library& library, ModelBuilder* builde
     spec.axis = u.cross(v);
   }
   const Section& section = ReadSection(map, map, library);
-  spec.thread = ReadThreadProperties(map, ReadMaterial(map, map, library), section);
+  if (ReadIsBeam(map)) {
+    // Beam threads (io/beam_reader.hpp): the net's material and section, no rope settings.
+    for (const char* key : {"tension_only", "rope_smoothing_strain", "bending"})
+      if (auto v = map.Find(key))
+        v->Fail(
+            fmt::format("{} is for cable threads; beam threads (element: ancf_beam) are "
+                        "elastic in tension and compression",
+                        key));
+    spec.beam_threads = ReadBeamMaterialAndSection(map, library);
+    spec.thread = MakeCableProperties(ReadMaterial(map, map, library), section);
+  } else {
+    spec.thread = ReadThreadProperties(map, ReadMaterial(map, map, library), section);
+  }
   if (auto v = map.Find("elements_per_thread")) spec.elements_per_thread = v->AsInt(1, 1000);
   CheckSlenderCable(section, ShortestThread(spec.topology),
                     fmt::format("the shortest thread of net '{}'", spec.name), map.Get("section"));

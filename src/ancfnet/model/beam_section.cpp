@@ -65,6 +65,9 @@ BeamElementParameters MakeBeamElementParameters(const BeamMaterial& material,
   RequirePositive(material.youngs_modulus, "Young's modulus");
   RequirePositive(material.density, "density");
   RequirePoissonRatio(material.poisson_ratio);
+  for (const double tau : {material.axial_damping_time, material.bending_damping_time})
+    if (!(tau >= 0.0 && std::isfinite(tau)))
+      throw InputError(fmt::format("a damping time must be ≥ 0 (got {})", tau));
   RequirePositive(section.area, "section area");
   RequirePositive(section.second_moment_y, "second moment of area I_y");
   RequirePositive(section.second_moment_z, "second moment of area I_z");
@@ -86,7 +89,9 @@ BeamElementParameters MakeBeamElementParameters(const BeamMaterial& material,
           .section_shear_stiffness = g * section.area,
           .mass_per_length = rho * section.area,
           .rotary_inertia_y = rho * section.second_moment_y,
-          .rotary_inertia_z = rho * section.second_moment_z};
+          .rotary_inertia_z = rho * section.second_moment_z,
+          .axial_damping_time = material.axial_damping_time,
+          .bending_damping_time = material.bending_damping_time};
 }
 
 BeamSectionFrame MakeBeamSectionFrame(const Vector3d& axis, const Vector3d& orientation) {

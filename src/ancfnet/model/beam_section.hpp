@@ -24,6 +24,10 @@ struct BeamMaterial {
   double youngs_modulus = 0.0;  ///< E (Pa), > 0
   double poisson_ratio = 0.0;   ///< ν, in (−1, 0.5)
   double density = 0.0;         ///< ρ (kg/m³), > 0
+  /// Kelvin–Voigt retardation times (s), ≥ 0, as for a cable's material (model/material.hpp):
+  /// τ_ε on the axial and shear strains, τ_κ on torsion and bending (elements/ancf_beam.hpp).
+  double axial_damping_time = 0.0;
+  double bending_damping_time = 0.0;
 };
 
 /// Rectangle of height h along y and width b along z: A = bh, I_z = bh³/12, I_y = hb³/12, the
@@ -39,8 +43,9 @@ BeamSection MakeRectangleBeamSection(double height, double width, double poisson
 BeamSection MakeCircleBeamSection(double diameter, double poisson_ratio);
 
 /// Element parameters of elements/ancf_beam.hpp with G = E/(2(1 + ν)), the cross-section
-/// penalties EA and GA, and the rotary inertias ρI_y, ρI_z. Throws InputError (the message names
-/// the offending quantity) unless L, E, ρ, A, I_y, I_z, J, k_y, k_z > 0, k ≤ 1 and ν ∈ (−1, 0.5).
+/// penalties EA and GA, the rotary inertias ρI_y, ρI_z and the damping times. Throws InputError
+/// (the message names the offending quantity) unless L, E, ρ, A, I_y, I_z, J, k_y, k_z > 0,
+/// k ≤ 1, ν ∈ (−1, 0.5) and the damping times are ≥ 0.
 BeamElementParameters MakeBeamElementParameters(const BeamMaterial& material,
                                                 const BeamSection& section, double length);
 

@@ -40,6 +40,9 @@ void Validate(const NetSpec& spec) {
     throw InputError(fmt::format("net '{}' has {} threads but {} thread designs", spec.name,
                                  spec.topology.threads.size(), spec.thread_designs.size()));
   for (const ThreadDesign& design : spec.thread_designs) {
+    if (design.properties && spec.beam_threads)
+      throw InputError(fmt::format(
+          "net '{}' has beam threads, which all take the net's material and section", spec.name));
     if (design.elements && *design.elements < 1)
       throw InputError(fmt::format("a thread needs at least 1 element (got {})", *design.elements));
     if (design.natural_length &&
@@ -109,6 +112,10 @@ void AddNet(ModelBuilder& builder, const NetSpec& spec) {
                     .natural_length = design.natural_length.value_or(
                         spec.natural_length_ratio * (topology.knots[b] - topology.knots[a]).norm()),
                     .breaking_force = spec.thread_breaking_force};
+    if (spec.beam_threads) {
+      cable.beam = spec.beam_threads;
+      cable.beam->orientation = spec.axis;
+    }
     if (ideal) {
       cable.start_knot = KnotName(spec.name, a);
       cable.end_knot = KnotName(spec.name, b);

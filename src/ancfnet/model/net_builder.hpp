@@ -1,8 +1,9 @@
 #pragma once
 /// @file Builds a net into a model from its design: knots and threads of a NetTopology
-/// (model/net_topology.hpp), one ANCF cable per thread, knots ideal (threads share the knot's
-/// position coordinates) or compliant (a knot mass joined to each thread end by a spring-damper,
-/// the model of the seed paper), corner masses ("bullets") and a packed initial state.
+/// (model/net_topology.hpp), one ANCF cable (or beam) per thread, knots ideal (threads share the
+/// knot's position coordinates) or compliant (a knot mass joined to each thread end by a
+/// spring-damper, the model of the seed paper), corner masses ("bullets") and a packed initial
+/// state.
 
 #include <limits>
 #include <optional>
@@ -39,6 +40,12 @@ struct NetSpec {
   std::string name;
   NetTopology topology;
   CableProperties thread;  ///< the same for every thread (ropes: tension_only)
+  /// Set: every thread is a beam of ANCF beam elements (elements/ancf_beam.hpp) of this material
+  /// and section, its d₂ along the net's axis (the orientation given here is not used), and
+  /// `thread` keeps only the drawing radius and the damping times, which must be the beam
+  /// material's (ModelBuilder::AddCable). Knots join threads at their positions only (a ball
+  /// joint), so each thread is free to spin about its axis: dynamics only, or supports of its own.
+  std::optional<BeamCableSpec> beam_threads;
   int elements_per_thread = 1;
   /// Per thread of the topology (empty, or one entry per thread): its own properties, elements
   /// or natural length.
@@ -72,7 +79,7 @@ CableProperties MakeThreadProperties(const Material& material, const Section& se
 /// threads, links "NAME.t<j>.start" / ".end" for compliant knots, the tether when asked
 /// (AddNetTether), and the net description.
 /// Throws InputError for invalid values (a thread of a compliant net needs a law, knot masses
-/// must be > 0 there, ratios must be positive).
+/// must be > 0 there, ratios must be positive, beam threads take no per-thread properties).
 void AddNet(ModelBuilder& builder, const NetSpec& spec);
 
 /// Name of knot i (a point mass) and thread j (a cable) of net `net`.

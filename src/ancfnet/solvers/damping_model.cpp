@@ -47,7 +47,8 @@ DampingModel::DampingModel(const Model& model) : model_(model) {
     }
     for (const BeamElement& beam : model.beam_elements()) {
       Matrix24d stiffness;
-      CalcBeamInternalForce(beam.parameters, model.Gather(beam, q0), {.stiffness = &stiffness});
+      CalcBeamInternalForce(beam.parameters, model.Gather(beam, q0), Vector24d::Zero(),
+                            {.stiffness = &stiffness});
       beam_rayleigh_.push_back(alpha_ * CalcBeamMassMatrix(beam.parameters) +
                                spec.rayleigh.beta * stiffness);
     }

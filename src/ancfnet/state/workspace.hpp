@@ -34,7 +34,9 @@ struct Workspace {
   // Per beam element, filled by CalcInternalForces / AssembleIterationMatrix; the entries of its
   // centre line above stay zero.
   std::vector<Vector24d> beam_force;
+  std::vector<Vector24d> beam_viscous_force;
   std::vector<Matrix24d> beam_stiffness;
+  std::vector<Matrix24d> beam_damping;
 
   // Copied from State::link_broken by the integrators before they evaluate forces; the force,
   // Jacobian and energy of a broken link are skipped.

@@ -48,7 +48,7 @@ Vector24d DeformedElement() {
 
 Vector24d Force(const BeamElementParameters& p, const Vector24d& e) {
   Vector24d f;
-  CalcBeamInternalForce(p, e, {.force = &f});
+  CalcBeamInternalForce(p, e, Vector24d::Zero(), {.force = &f});
   return f;
 }
 
@@ -71,7 +71,7 @@ TEST(AncfBeam, StiffnessMatchesFiniteDifferences) {
   const Vector24d e = DeformedElement();
   Vector24d f;
   Matrix24d k;
-  CalcBeamInternalForce(p, e, {.force = &f, .stiffness = &k});
+  CalcBeamInternalForce(p, e, Vector24d::Zero(), {.force = &f, .stiffness = &k});
   EXPECT_LT((f - Force(p, e)).norm(), 1e-12 * f.norm());
   Matrix24d k_fd;
   const double h = 1e-6;
@@ -100,7 +100,7 @@ TEST(AncfBeam, StraightElementHasOnlyTheSixRigidZeroEnergyModes) {
   const BeamElementParameters p = MakeParameters();
   Matrix24d k;
   CalcBeamInternalForce(p, StraightElement(p.length, Matrix3d::Identity(), Vector3d::Zero()),
-                        {.stiffness = &k});
+                        Vector24d::Zero(), {.stiffness = &k});
   const Eigen::SelfAdjointEigenSolver<Matrix24d> eig(k);
   const auto& lambda = eig.eigenvalues();
   for (int i = 0; i < 6; ++i) EXPECT_LT(std::abs(lambda[i]), 1e-9 * lambda[23]) << i;
@@ -147,6 +147,71 @@ TEST(AncfBeam, AxisIsInterpolatedLikeTheCableFromTheFirstSixNodalCoordinates) {
       EXPECT_EQ(map.b(kCurvatureVector, kAxisBlocks[i]), cable.dds[i]);
     }
   }
+}
+
+// Damping times that differ, on the parameters above, and a rate that strains every term.
+BeamElementParameters MakeDampedParameters() {
+  BeamElementParameters p = MakeParameters();
+  p.axial_damping_time = 0.03;
+  p.bending_damping_time = 0.07;
+  return p;
+}
+
+Vector24d StrainRate() {
+  Vector24d e_dot;
+  for (int i = 0; i < 24; ++i) e_dot[i] = std::sin(1.7 * i + 0.4);
+  return e_dot;
+}
+
+Vector24d DampedForce(const BeamElementParameters& p, const Vector24d& e, const Vector24d& e_dot) {
+  Vector24d f;
+  CalcBeamInternalForce(p, e, e_dot, {.force = &f});
+  return f;
+}
+
+TEST(AncfBeam, KelvinVoigtJacobiansMatchFiniteDifferences) {
+  const BeamElementParameters p = MakeDampedParameters();
+  const Vector24d e = DeformedElement();
+  const Vector24d e_dot = StrainRate();
+  Vector24d f, f_visc;
+  Matrix24d k, c;
+  CalcBeamInternalForce(p, e, e_dot,
+                        {.force = &f, .viscous_force = &f_visc, .stiffness = &k, .damping = &c});
+  // The viscous part is what the rate adds to the elastic force, and is not small here.
+  EXPECT_LT((f - f_visc - Force(p, e)).norm(), 1e-12 * f.norm());
+  EXPECT_GT(f_visc.norm(), 0.1 * f.norm());
+  Matrix24d k_fd, c_fd;
+  const double h = 1e-6;
+  for (int j = 0; j < 24; ++j) {
+    Vector24d ep = e, em = e, vp = e_dot, vm = e_dot;
+    ep[j] += h;
+    em[j] -= h;
+    vp[j] += h;
+    vm[j] -= h;
+    k_fd.col(j) = (DampedForce(p, ep, e_dot) - DampedForce(p, em, e_dot)) / (2 * h);
+    c_fd.col(j) = (DampedForce(p, e, vp) - DampedForce(p, e, vm)) / (2 * h);
+  }
+  EXPECT_LT((k - k_fd).norm(), 1e-6 * k.norm()) << "stiffness\n" << k - k_fd;
+  EXPECT_LT((c - c_fd).norm(), 1e-6 * c.norm()) << "damping\n" << c - c_fd;
+  // Asked alone, the damping matrix is the same.
+  Matrix24d c_alone;
+  CalcBeamInternalForce(p, e, e_dot, {.damping = &c_alone});
+  EXPECT_LT((c_alone - c).norm(), 1e-12 * c.norm());
+}
+
+TEST(AncfBeam, KelvinVoigtDissipatesAndRigidMotionDoesNot) {
+  // ėᵀ Q_visc = Σ τᵢ kᵢ ṡᵢ² ≥ 0 for any rate; a rigid rotation of a straight element changes no
+  // strain, so it is free of viscous force.
+  const BeamElementParameters p = MakeDampedParameters();
+  Vector24d f_visc;
+  CalcBeamInternalForce(p, DeformedElement(), StrainRate(), {.viscous_force = &f_visc});
+  EXPECT_GT(StrainRate().dot(f_visc), 0.0);
+  const Vector24d e = StraightElement(p.length, Matrix3d::Identity(), Vector3d::Zero());
+  const Vector3d omega(0.3, -1.2, 0.8);
+  Vector24d spin;
+  for (int b = 0; b < 8; ++b) spin.segment<3>(3 * b) = omega.cross(Vector3d(e.segment<3>(3 * b)));
+  CalcBeamInternalForce(p, e, spin, {.viscous_force = &f_visc});
+  EXPECT_LT(f_visc.norm(), 1e-12);
 }
 
 TEST(AncfBeam, MassMatrixGivesMassAndRotaryInertiaOfRigidMotions) {

@@ -1,6 +1,7 @@
 // Beams in the model builder (model/model_builder.hpp, docs/theory.md "Beams in a model"): the
 // 12 coordinates of a beam node and its reference frame by Gram–Schmidt, the Timoshenko clamp,
-// node sharing with `start_cable`, and what beams refuse.
+// node sharing with `start_cable`, the Kelvin–Voigt damping of the beam material, nets of beam
+// threads, and what beams refuse.
 
 #include <gtest/gtest.h>
 
@@ -8,6 +9,7 @@
 
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/model/model_builder.hpp"
+#include "ancfnet/model/net_builder.hpp"
 
 namespace ancfnet {
 namespace {
@@ -117,12 +119,68 @@ TEST(BeamCable, AContinuationMustBeStraightAndKeepTheSectionFrame) {
   ExpectInputError([&] { builder.AddCable(elsewhere); }, "must start at its end");
 }
 
+TEST(BeamCable, KelvinVoigtDampingComesFromTheBeamMaterial) {
+  ModelBuilder builder;
+  CableSpec spec = BeamAlongX("beam", 0.0, 1.0, Vector3d::UnitZ());
+  spec.beam->material.axial_damping_time = spec.properties.axial_damping_time = 1e-3;
+  spec.beam->material.bending_damping_time = spec.properties.bending_damping_time = 2e-3;
+  builder.AddCable(spec);
+  const Model model = builder.Build();
+  for (const BeamElement& beam : model.beam_elements()) {
+    EXPECT_EQ(beam.parameters.axial_damping_time, 1e-3);
+    EXPECT_EQ(beam.parameters.bending_damping_time, 2e-3);
+  }
+  // The centre line is undamped: the beam kernel does the damping.
+  for (const CableElement& element : model.elements())
+    EXPECT_EQ(element.parameters.axial_damping_time + element.parameters.bending_damping_time, 0.0);
+}
+
+// A net of beam threads (NetSpec::beam_threads) with compliant knots: every thread is a beam of
+// the net's section with d₂ along the net's normal (not the orientation given), and each thread
+// end hangs on its knot by a link, as a cable thread does; per-thread properties are refused.
+TEST(BeamCable, NetOfBeamThreadsWithCompliantKnots) {
+  NetSpec spec;
+  spec.name = "net";
+  spec.topology = MakeGridNet({.meshes_u = 2, .meshes_v = 2});
+  spec.thread = Rod();
+  spec.beam_threads = RodBeam(Vector3d::UnitX());
+  spec.elements_per_thread = 2;
+  spec.knot_model = KnotModel::kCompliant;
+  spec.knot_mass = 0.01;
+  spec.link_law = MakeLinearLaw(1e4);
+  {
+    ModelBuilder builder;
+    AddNet(builder, spec);
+    const Model model = builder.Build();
+    ASSERT_EQ(model.cables().size(), 12u);
+    EXPECT_EQ(model.beam_elements().size(), 24u);
+    EXPECT_EQ(model.links().size(), 24u);
+    for (const Cable& cable : model.cables()) {
+      EXPECT_EQ(cable.element, ElementKind::kBeam);
+      const CableNode& node = model.nodes()[cable.first_node];
+      EXPECT_LT((model.initial_positions().segment<3>(node.section_dof) - Vector3d::UnitZ()).norm(),
+                1e-12);
+    }
+  }
+  ThreadDesign own;
+  own.properties = Rod();
+  spec.thread_designs.assign(12, own);
+  ModelBuilder builder;
+  ExpectInputError([&] { AddNet(builder, spec); }, "beam threads");
+}
+
 TEST(BeamCable, WhatBeamsDoNotSupportIsRefused) {
   {
     ModelBuilder builder;
     CableSpec spec = BeamAlongX("beam", 0.0, 1.0, Vector3d::UnitZ());
-    spec.properties.axial_damping_time = 1e-3;
-    ExpectInputError([&] { builder.AddCable(spec); }, "Kelvin");
+    spec.properties.axial_damping_time = 1e-3;  // not the beam material's (0)
+    ExpectInputError([&] { builder.AddCable(spec); }, "beam's material");
+  }
+  {
+    ModelBuilder builder;
+    CableSpec spec = BeamAlongX("beam", 0.0, 1.0, Vector3d::UnitZ());
+    spec.properties.tension_only = true;
+    ExpectInputError([&] { builder.AddCable(spec); }, "rope law");
   }
   {
     ModelBuilder builder;
