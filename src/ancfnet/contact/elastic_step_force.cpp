@@ -24,15 +24,16 @@ ElasticStepMagnitude CalcElasticStepMagnitude(const NormalLaw& law, double penet
 
 Vector3d CalcElasticStepForce(const NormalLaw& law, double penetration_start,
                               double penetration_end, const Vector3d& normal,
-                              const Vector3d& displacement) {
+                              const Vector3d& displacement, double least_displacement) {
   const double d0 = penetration_start;
   const double d1 = penetration_end;
   const double magnitude = CalcElasticStepMagnitude(law, d0, d1).force;
   if (magnitude == 0.0) return Vector3d::Zero();
+  // Below the least displacement the mismatch is the penetrations' round-off, which the division
+  // by |d|² would turn into a spurious tangential force (a probe sticking on a slope); what n̄ = n
+  // then leaves out of the energy is of order F̄ (|d|² κ + ε |x|), nothing.
   const double moved = displacement.squaredNorm();
-  // A displacement this small against the penetrations leaves n̄ = n to round-off.
-  const double scale = std::max(d0 * d0, d1 * d1);
-  if (!(moved > 1e-28 * scale)) return magnitude * normal;
+  if (!(moved > least_displacement * least_displacement)) return magnitude * normal;
   const double mismatch = (d0 - d1) - normal.dot(displacement);
   return magnitude * (normal + (mismatch / moved) * displacement);
 }

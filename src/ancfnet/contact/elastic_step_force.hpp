@@ -24,9 +24,10 @@ ElasticStepMagnitude CalcElasticStepMagnitude(const NormalLaw& law, double penet
 /// force's work is counted, Q·Δq = f̄·d), with n the unit normal at the middle of the step:
 ///   f̄ = F̄ n̄,   F̄ = (Φ(δ₁) − Φ(δ₀))/(δ₁ − δ₀),   n̄ = n + ((δ₀ − δ₁) − n·d)/|d|² d,
 /// so that f̄·d = −(Φ(δ₁) − Φ(δ₀)). Where δ₁ − δ₀ is at round-off level F̄ is the law's elastic
-/// force at (δ₀ + δ₁)/2, and where d is zero n̄ = n. Zero when neither end touches (δ ≤ 0).
+/// force at (δ₀ + δ₁)/2, and where |d| is below `least_displacement` (m; callers use 10⁻⁶ of the
+/// probe's radius) n̄ = n. Zero when neither end touches (δ ≤ 0).
 Vector3d CalcElasticStepForce(const NormalLaw& law, double penetration_start,
                               double penetration_end, const Vector3d& normal,
-                              const Vector3d& displacement);
+                              const Vector3d& displacement, double least_displacement);
 
 }  // namespace ancfnet

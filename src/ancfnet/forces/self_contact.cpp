@@ -222,7 +222,9 @@ SelfContact::PairState SelfContact::CalcStepPair(const Candidate& c, const Vecto
   const VectorXd& q1 = *step_end_;
   for (int k = 0; k < na; ++k) d += wa[k] * (q1.segment<3>(da[k]) - q0.segment<3>(da[k]));
   for (int k = 0; k < nb; ++k) d -= wb[k] * (q1.segment<3>(db[k]) - q0.segment<3>(db[k]));
-  pair.force.force += CalcElasticStepForce(law, start, end, pair.direction, d) - elastic;
+  // CalcElasticStepForce's least displacement: 10⁻⁶ of the radii, as for targets.
+  const double least = 1e-6 * (primitives_[c.a].radius + primitives_[c.b].radius);
+  pair.force.force += CalcElasticStepForce(law, start, end, pair.direction, d, least) - elastic;
   if (jacobian && pair.force.touching) {
     const double slope = 2.0 * CalcElasticStepMagnitude(law, start, end).dforce_dend -
                          law.Evaluate(pair.force.penetration, 0.0, 1.0).dforce_ddelta;

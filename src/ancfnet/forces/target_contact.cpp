@@ -16,6 +16,9 @@ namespace {
 // exact value has not been needed.
 constexpr double kFar = std::numeric_limits<double>::infinity();
 
+// CalcElasticStepForce's least displacement, per metre of a probe's radius.
+constexpr double kLeastDisplacement = 1e-6;
+
 // The generalised weights of the point c(t) = (1 − t) r(ξ₀) + t r(ξ₁) of a probe's axis.
 Vector4d CalcWeights(const ContactProbe& probe, double t) {
   return (1.0 - t) * probe.shape0 + t * probe.shape1;
@@ -310,7 +313,8 @@ std::optional<TargetContact::PairForce> TargetContact::CalcStepPairForce(
                               history, with_jacobian);
   f.target = static_cast<Index>(t);
   f.force = f.dissipative + CalcElasticStepForce(law, start_depth, end_depth, f.normal,
-                                                 CalcStepDisplacement(probe, f));
+                                                 CalcStepDisplacement(probe, f),
+                                                 kLeastDisplacement * probe.radius);
   if (with_jacobian) {
     // F̄ depends on the end of the step, which moves twice as far as the midpoint: the elastic
     // slope at the midpoint gives way to 2 ∂F̄/∂δ₁ (∂δ/∂x = −nᵀ).

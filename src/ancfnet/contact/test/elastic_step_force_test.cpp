@@ -23,7 +23,7 @@ TEST(ElasticStepForce, WorkEqualsEnergyChange) {
     const double d0 = s.Penetration(x0);
     const double d1 = s.Penetration(x1);
     const Vector3d n = (0.5 * (x0 + x1)).normalized();
-    const Vector3d f = CalcElasticStepForce(kHertz, d0, d1, n, x1 - x0);
+    const Vector3d f = CalcElasticStepForce(kHertz, d0, d1, n, x1 - x0, 1e-9);
     const double change = kHertz.CalcElasticEnergy(d1) - kHertz.CalcElasticEnergy(d0);
     EXPECT_NEAR(f.dot(x1 - x0), -change, 1e-12 * std::max(std::abs(change), 1e-9));
     // The force stays close to the normal, pushing out.
@@ -43,17 +43,30 @@ TEST(ElasticStepForce, TendsToTheLawsForceForASmallStep) {
     const Vector3d mid = 0.5 * (x0 + x1);
     const Vector3d n = mid.normalized();
     const Vector3d f =
-        CalcElasticStepForce(kHertz, s.Penetration(x0), s.Penetration(x1), n, x1 - x0);
+        CalcElasticStepForce(kHertz, s.Penetration(x0), s.Penetration(x1), n, x1 - x0, 1e-12);
     const Vector3d law = kHertz.Evaluate(s.Penetration(mid), 0.0, 1.0).elastic_force * n;
     const double error = (f - law).norm() / law.norm();
-    if (previous > 0.0) EXPECT_LT(error, 0.1 * previous);
+    if (previous > 0.0) {
+      EXPECT_LT(error, 0.1 * previous);
+    }
     previous = error;
   }
   EXPECT_LT(previous, 1e-5);
 }
 
+// A probe sticking on a plane: a displacement of 10⁻¹⁵ m and penetrations that differ by their
+// round-off must not turn that round-off into a tangential force.
+TEST(ElasticStepForce, ASteadyProbeGetsTheNormalForceOnly) {
+  const Vector3d n = Vector3d::UnitZ();
+  const double delta = 4.5e-5;
+  const Vector3d f = CalcElasticStepForce(kHertz, delta, delta + 3e-18, n,
+                                          Vector3d(1e-15, 0.0, 0.0), 1e-6 * 0.01);
+  EXPECT_EQ(f.x(), 0.0);
+  EXPECT_NEAR(f.z(), kHertz.Evaluate(delta, 0.0, 1.0).elastic_force, 1e-9 * f.norm());
+}
+
 TEST(ElasticStepForce, ZeroWhenApartAtBothEnds) {
-  EXPECT_EQ(CalcElasticStepForce(kHertz, -1e-4, -2e-5, Vector3d::UnitZ(), Vector3d(0, 0, 1e-4)),
+  EXPECT_EQ(CalcElasticStepForce(kHertz, -1e-4, -2e-5, Vector3d::UnitZ(), Vector3d(0, 0, 1e-4), 0.0),
             Vector3d::Zero());
 }
 

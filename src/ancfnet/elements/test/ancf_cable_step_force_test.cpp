@@ -104,7 +104,9 @@ TEST(CableStepForce, ConvergesToTheMidpointForceAsTheStepShrinks) {
     const Vector12d e1 = Start() + scale * (End() - Start());
     const Vector12d force = ElasticForce(p, 0.5 * (Start() + e1));
     const double size = CalcCableStepForceCorrection(p, Start(), e1, force).norm() / force.norm();
-    if (previous > 0.0) EXPECT_LT(size, 0.02 * previous);  // ∝ Δe²: 100× smaller
+    if (previous > 0.0) {
+      EXPECT_LT(size, 0.02 * previous);  // ∝ Δe²: 100× smaller
+    }
     previous = size;
   }
 }
