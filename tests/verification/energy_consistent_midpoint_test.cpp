@@ -15,6 +15,7 @@
 
 #include "ancfnet/integrators/dynamic_solver.hpp"
 #include "ancfnet/io/scene_loader.hpp"
+#include "net_on_sphere_scene.hpp"
 
 namespace ancfnet {
 namespace {
@@ -75,21 +76,8 @@ contact:
 }
 
 TEST(EnergyConsistentMidpoint, NetLandingOnASphereWithFrictionAndDamping) {
-  const BalanceRecord r = RunBalance(R"(gravity: [0, 0, -9.81]
-materials:
-  thread: {youngs_modulus: 1.0e9, density: 1000, axial_damping_time: 1.0e-4}
-sections:
-  thread: {shape: circle, diameter: 0.002}
-nets:
-  - {name: net, type: square, side: 0.8, meshes: 4, center: [0, 0, 0.33], material: thread,
-     section: thread, knot_model: ideal, tension_only: false}
-contact:
-  law: {type: carvalho_martins, stiffness: 1.0e6, restitution: 0.3}
-  friction: {type: tanh, static: 0.3, kinetic: 0.3, regularization_speed: 1.0e-2}
-  points_per_element: 8
-  targets:
-    - {name: ball, type: sphere, center: [0, 0, 0], radius: 0.3}
-)" + Midpoint(0.25));
+  const BalanceRecord r =
+      RunBalance(verification::SmallNetOnSphereScene(0.8, 0.33) + Midpoint(0.25));
   ASSERT_TRUE(r.completed) << r.message;
   EXPECT_GT(r.dissipated, 0.05 * r.scale);  // contact, friction and threads do dissipate
   EXPECT_LT(r.max_drift, 1e-4 * r.scale);

@@ -12,6 +12,7 @@
 
 #include "ancfnet/integrators/dynamic_solver.hpp"
 #include "ancfnet/io/scene_loader.hpp"
+#include "net_on_sphere_scene.hpp"
 
 namespace ancfnet {
 namespace {
@@ -19,21 +20,7 @@ namespace {
 // The S3 scene (examples/net_drop_sphere.yaml) with 4 × 4 meshes and ρ∞ = 1, 0.6 s; `{}` is
 // where a line_search key goes.
 std::string FrictionLandingScene(const std::string& line_search) {
-  return R"(gravity: [0, 0, -9.81]
-materials:
-  thread: {youngs_modulus: 1.0e9, density: 1000, axial_damping_time: 1.0e-4}
-sections:
-  thread: {shape: circle, diameter: 0.002}
-nets:
-  - {name: net, type: square, side: 1.0, meshes: 4, center: [0, 0, 0.35], material: thread,
-     section: thread, knot_model: ideal, tension_only: false}
-contact:
-  law: {type: carvalho_martins, stiffness: 1.0e6, restitution: 0.3}
-  friction: {type: tanh, static: 0.3, kinetic: 0.3, regularization_speed: 1.0e-2}
-  points_per_element: 8
-  targets:
-    - {name: ball, type: sphere, center: [0, 0, 0], radius: 0.3}
-analysis:
+  return verification::SmallNetOnSphereScene(1.0, 0.35) + R"(analysis:
   type: dynamic
   spectral_radius: 1.0
   time_step: 2.0e-3
