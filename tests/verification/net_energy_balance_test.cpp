@@ -4,7 +4,9 @@
 // h = 2·10⁻⁴ s > τ: the snaps are not resolved by the step. Before issue 17 the strain energy went
 // negative (the rope law's energy was measured from ε = 0) and the balance T + U + D rose by 11 %
 // in 0.2 s (D from the power q̇ᵀQ_visc overestimated unresolved snaps). Now U ≥ 0 at every step
-// and the balance stays within 1 % of the launch energy (measured 2026-12-03: +0.90 %).
+// and the balance stays within 1 % of the initial energy, kinetic and strain (measured 2026-12-06:
+// +0.92 %, all of it in the first snap, 0 to 2.4 ms, whatever the Newton tolerance: the error of
+// generalised-α's account of an unresolved snap).
 
 #include <gtest/gtest.h>
 
@@ -45,6 +47,7 @@ TEST(NetEnergyBalance, SnappingRopesKeepTheBalanceAndAPositiveStrainEnergy) {
   const Scene scene = ParseScene(kScene);
   State state = MakeInitialState(scene.model);
   double balance0 = 0.0, launch = 0.0, max_drift = 0.0, min_strain = 1e300, dissipated = 0.0;
+  double initial_energy = 0.0;
   bool first = true;
   const SolveResult result = SolveDynamic(
       scene.model, scene.analysis.dynamics, 0.0,
@@ -52,6 +55,7 @@ TEST(NetEnergyBalance, SnappingRopesKeepTheBalanceAndAPositiveStrainEnergy) {
         if (first) {
           balance0 = e.Balance();
           launch = e.kinetic;
+          initial_energy = e.kinetic + e.strain;
         }
         first = false;
         max_drift = std::max(max_drift, std::abs(e.Balance() - balance0));
@@ -61,7 +65,7 @@ TEST(NetEnergyBalance, SnappingRopesKeepTheBalanceAndAPositiveStrainEnergy) {
       &state);
   ASSERT_TRUE(result.completed) << result.message;
   EXPECT_GE(min_strain, 0.0);
-  EXPECT_LT(max_drift, 0.01 * launch);
+  EXPECT_LT(max_drift, 0.01 * initial_energy);
   // The snaps do dissipate: a fifth of the launch energy or more (measured 23 %).
   EXPECT_GT(dissipated, 0.15 * launch);
 }

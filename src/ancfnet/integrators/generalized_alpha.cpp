@@ -84,12 +84,11 @@ class GeneralizedAlphaIntegrator::StepProblem {
   }
 
   // Convergence is judged on the position increment Δq = β' Δa and the constraints' violation.
-  double IncrementNorm(const VectorXd& da) const {
-    return core_.IncrementNorm(da, state_.q, beta_prime_);
-  }
+  double IncrementNorm(const VectorXd& da) const { return core_.IncrementNorm(da, beta_prime_); }
   double IncrementEnergy(const VectorXd& da, const VectorXd& r) const {
     return beta_prime_ * std::abs(da.dot(r));
   }
+  double ResidualWork(const VectorXd& r) const { return core_.ResidualWork(state_.q, r); }
   double EnergyScale() const { return core_.EnergyScale(state_.q, state_.v); }
 
  private:

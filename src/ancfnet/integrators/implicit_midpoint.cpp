@@ -54,13 +54,14 @@ class ImplicitMidpointIntegrator::StepProblem {
   }
 
   // Convergence is judged on the increment of the end position, Δq_{n+1} = (h²/2) Δa.
-  double IncrementNorm(const VectorXd& da) const {
-    return core_.IncrementNorm(da, mid_.q, 0.5 * h_ * h_);
-  }
+  double IncrementNorm(const VectorXd& da) const { return core_.IncrementNorm(da, 0.5 * h_ * h_); }
   // The residual is taken at the midpoint, which moves by (h²/4) Δa.
   double IncrementEnergy(const VectorXd& da, const VectorXd& r) const {
     return 0.25 * h_ * h_ * std::abs(da.dot(r));
   }
+  // Over the whole step, q_n to q_{n+1} (end_, set by CalcResidual): the balance error of the
+  // step, whose forces are discrete gradients over it.
+  double ResidualWork(const VectorXd& r) const { return core_.ResidualWork(end_, r); }
   double EnergyScale() const { return core_.EnergyScale(mid_.q, mid_.v); }
 
  private:

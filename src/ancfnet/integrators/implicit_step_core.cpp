@@ -5,6 +5,7 @@
 
 #include "ancfnet/forces/clearance_joint_forces.hpp"
 #include "ancfnet/integrators/initial_acceleration.hpp"
+#include "ancfnet/model/coordinate_scales.hpp"
 #include "ancfnet/model/rigid_body_kinematics.hpp"
 #include "ancfnet/state/rigid_body_state.hpp"
 
@@ -21,6 +22,9 @@ ImplicitStepCore::ImplicitStepCore(const Model& model, const DynamicSettings& se
       constraints_(model),
       newton_(settings.newton, settings.jacobian_update),
       newton_settings_(settings.newton),
+      increment_weights_(CalcIncrementWeights(CalcCoordinateScales(model), dofs_.coordinates(),
+                                              settings.newton.relative_tolerance,
+                                              settings.newton.absolute_tolerance)),
       smallest_step_(settings.smallest_step()),
       residual_full_(model.num_dofs()) {
   const DofMap all = DofMap::AllCoordinates(model);
@@ -208,13 +212,11 @@ double ImplicitStepCore::EnergyScale(const VectorXd& q, const VectorXd& v) const
   return kinetic + std::abs(internal) + std::abs(external);
 }
 
-double ImplicitStepCore::IncrementNorm(const VectorXd& da, const VectorXd& q, double scale) const {
-  const double rtol = newton_settings_.relative_tolerance;
-  const double atol = newton_settings_.absolute_tolerance;
-  if (constraints_.empty()) return WeightedRmsNorm(da, q, dofs_.coordinates(), scale, rtol, atol);
-  return std::max(
-      WeightedRmsNorm(da.head(dofs_.num_unknowns()), q, dofs_.coordinates(), scale, rtol, atol),
-      constraints_.ScaledViolation(rtol, atol));
+double ImplicitStepCore::IncrementNorm(const VectorXd& da, double scale) const {
+  if (constraints_.empty()) return WeightedRmsNorm(da, increment_weights_, scale);
+  return std::max(WeightedRmsNorm(da.head(dofs_.num_unknowns()), increment_weights_, scale),
+                  constraints_.ScaledViolation(newton_settings_.relative_tolerance,
+                                               newton_settings_.absolute_tolerance));
 }
 
 }  // namespace ancfnet

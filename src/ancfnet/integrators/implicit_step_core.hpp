@@ -77,11 +77,16 @@ class ImplicitStepCore {
   double ConstraintViolation(const VectorXd& q, const VectorXd& v);
   /// Forces at (q, v) into ws(), damping models included.
   void CalcForces(const VectorXd& q, const VectorXd& v);
-  /// Weighted RMS norm of the position change scale · Δa against positions q (the first
-  /// num_unknowns entries of Δa); with ideal joints at least the scaled violation of the last
-  /// CalcResidual (JointConstraints::ScaledViolation), so that Newton converges only where the
-  /// constraints hold to its tolerances.
-  double IncrementNorm(const VectorXd& da, const VectorXd& q, double scale) const;
+  /// Weighted RMS norm of the position change scale · Δa (the first num_unknowns entries of Δa),
+  /// each coordinate against the scale of its kind (CalcIncrementWeights); with ideal joints at
+  /// least the scaled violation of the last CalcResidual (JointConstraints::ScaledViolation), so
+  /// that Newton converges only where the constraints hold to its tolerances.
+  double IncrementNorm(const VectorXd& da, double scale) const;
+  /// |(q − q_n)ᵀ R| (J) over the unknowns: the work of the residual's force rows over the step
+  /// from the previous state to positions q (CalcResidualWork).
+  double ResidualWork(const VectorXd& q, const VectorXd& r) const {
+    return CalcResidualWork(q, previous_.q, dofs_.coordinates(), r);
+  }
   /// The energy a step from the saved state to (q, v) exchanges, the scale of Newton's energy
   /// test (NewtonSettings): ½ vᵀ M v + |Δqᵀ Q_int| + |Δqᵀ Q_ext| with Δq = q − q_n and the
   /// forces of the last CalcResidual (J).
@@ -112,6 +117,7 @@ class ImplicitStepCore {
   SparseMatrixd mass_;  // all coordinates
   NewtonSolver newton_;
   NewtonSettings newton_settings_;
+  VectorXd increment_weights_;  // of the convergence norm, per unknown (CalcIncrementWeights)
   double last_h_ = 0.0;
   double smallest_step_;  // DynamicSettings::smallest_step()
   State previous_;

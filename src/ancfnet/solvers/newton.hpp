@@ -20,6 +20,9 @@ namespace ancfnet {
 ///   double IncrementNorm(const VectorXd& dx) const;   weighted RMS norm (≤ 1: converged)
 ///   double IncrementEnergy(const VectorXd& dx, const VectorXd& r) const;  |Δqᵀ R| (J) of the
 ///                                                  position increment Δq that dx gives
+///   double ResidualWork(const VectorXd& r) const;   |Δqᵀ R| (J): the work of the residual's
+///                                                  force rows R over the displacement Δq of
+///                                                  the whole step (or load increment) so far
 ///   double EnergyScale() const;                    energy the step exchanges (J), ≥ 0
 struct NewtonResult {
   bool converged = false;

@@ -9,6 +9,8 @@ namespace ancfnet {
 inline constexpr double kMinDamping = 1.0 / 256.0;
 // Iterations of a converged solve above which the next solve starts with a fresh Jacobian.
 inline constexpr int kSlowConvergenceIterations = 4;
+// An old Jacobian is renewed once an iteration shrinks the increment by less than this factor.
+inline constexpr double kStaleContraction = 0.5;
 // A weighted increment norm this small is rounding (Δq ≈ 10⁻¹⁴ |q| with rtol = 10⁻⁶): no
 // correction could do better, whatever energy test is asked for.
 inline constexpr double kRoundingNorm = 1e-8;
@@ -97,13 +99,29 @@ NewtonResult NewtonSolver::Iterate(Problem& problem, bool force_refresh, bool da
   const bool refresh_first =
       every_iteration || update_ == JacobianUpdate::kEveryStep || slow_last_time;
   double previous_norm = 0.0;
-  for (int it = 0; it < settings_.max_iterations; ++it) {
-    result.iterations = it + 1;
+  // The last correction was a full step that passed the increment test: the residual at the
+  // corrected iterate decides.
+  bool increment_converged = false;
+  bool at_rounding = false;  // and it was at the level of rounding
+  for (int it = 0;; ++it) {
     problem.CalcResidual(&residual_);
     if (!residual_.allFinite()) {
       result.failure = "non-finite residual";
       return result;
     }
+    // The work of the residual force over the step is the energy the step would wrongly create
+    // or destroy if accepted now (for the energy-consistent midpoint rule exactly its balance
+    // error): it must be a small fraction of the energy the step exchanges. A correction at the
+    // level of rounding is accepted whatever the residual: no correction could do better.
+    if (increment_converged &&
+        (at_rounding ||
+         problem.ResidualWork(residual_) <= settings_.energy_tolerance * problem.EnergyScale())) {
+      result.converged = true;
+      last_iterations_ = result.iterations;
+      return result;
+    }
+    if (it == settings_.max_iterations) break;
+    result.iterations = it + 1;
     const bool refresh = !has_factorization_ || every_iteration || (it == 0 && refresh_first);
     if (refresh && !Refresh(problem, &result)) return result;
     linear_solver_.Solve(residual_, &increment_);
@@ -116,12 +134,14 @@ NewtonResult NewtonSolver::Iterate(Problem& problem, bool force_refresh, bool da
     // An old Jacobian that no longer contracts (or diverges) is refreshed and the iteration
     // redone. With a fresh Jacobian, Newton far from the solution need not be monotone: only the
     // iteration limit and non-finite values stop it.
-    if (it > 0 && !jacobian_fresh_ && norm > 0.5 * previous_norm) {
+    if (it > 0 && !jacobian_fresh_ && norm > kStaleContraction * previous_norm) {
       if (!Refresh(problem, &result)) return result;
       linear_solver_.Solve(residual_, &increment_);
       increment_ = -increment_;
     }
-    const double energy = problem.IncrementEnergy(increment_, residual_);
+    // |Δxᵀ R|: twice the strain energy left in the stiffest modes near the root, which a small
+    // increment of a stiff system still leaves large.
+    const double correction_energy = problem.IncrementEnergy(increment_, residual_);
     problem.ApplyIncrement(increment_, 1.0);
     jacobian_fresh_ = false;
     const double full_norm = problem.IncrementNorm(increment_);
@@ -133,13 +153,10 @@ NewtonResult NewtonSolver::Iterate(Problem& problem, bool force_refresh, bool da
     previous_norm = full_norm;
     // Converged only on a full step: a small damped step says nothing about the distance left.
     // The energy test is taken with the scale at the corrected iterate.
-    const bool small_energy =
-        full_norm <= kRoundingNorm || energy <= settings_.energy_tolerance * problem.EnergyScale();
-    if (step == 1.0 && full_norm <= 1.0 && small_energy) {
-      result.converged = true;
-      last_iterations_ = result.iterations;
-      return result;
-    }
+    at_rounding = full_norm <= kRoundingNorm;
+    increment_converged =
+        step == 1.0 && full_norm <= 1.0 &&
+        (at_rounding || correction_energy <= settings_.energy_tolerance * problem.EnergyScale());
   }
   result.failure = "no convergence in " + std::to_string(settings_.max_iterations) + " iterations";
   return result;

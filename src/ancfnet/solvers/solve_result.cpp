@@ -77,16 +77,27 @@ std::string StepCutReason(const std::string& failure) {
   return std::regex_replace(failure, kNumber, "#");
 }
 
-double WeightedRmsNorm(const Eigen::Ref<const VectorXd>& dx, const VectorXd& x, const std::vector<Index>& coordinates,
-                       double scale, double rtol, double atol) {
+VectorXd CalcIncrementWeights(const VectorXd& coordinate_scales,
+                              const std::vector<Index>& coordinates, double rtol, double atol) {
+  VectorXd weights(static_cast<Index>(coordinates.size()));
+  for (Index i = 0; i < weights.size(); ++i)
+    weights[i] = atol + rtol * coordinate_scales[coordinates[i]];
+  return weights;
+}
+
+double CalcResidualWork(const VectorXd& q, const VectorXd& q_start,
+                        const std::vector<Index>& coordinates, const VectorXd& r) {
+  double work = 0.0;
+  for (std::size_t i = 0; i < coordinates.size(); ++i)
+    work += (q[coordinates[i]] - q_start[coordinates[i]]) * r[static_cast<Index>(i)];
+  return std::abs(work);
+}
+
+double WeightedRmsNorm(const Eigen::Ref<const VectorXd>& dx, const VectorXd& weights,
+                       double scale) {
   if (dx.size() == 0) return 0.0;
-  double sum = 0.0;
-  for (Index i = 0; i < dx.size(); ++i) {
-    const double w = atol + rtol * std::abs(x[coordinates[i]]);
-    const double r = scale * dx[i] / w;
-    sum += r * r;
-  }
-  return std::sqrt(sum / static_cast<double>(dx.size()));
+  return std::abs(scale) * (dx.array() / weights.array()).matrix().norm() /
+         std::sqrt(static_cast<double>(dx.size()));
 }
 
 }  // namespace ancfnet

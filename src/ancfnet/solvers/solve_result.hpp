@@ -61,9 +61,22 @@ bool StopIfInterrupted(const OutputCallback& output, const State& state,
 /// "self-contact: element # and element # passed through each other").
 std::string StepCutReason(const std::string& failure);
 
-/// Weighted RMS norm √(mean_i (dx_i / (atol + rtol |x_i|))²) over the unknowns (Hairer &
-/// Wanner 1996, II.4); `coordinates` maps unknown i to its entry of x.
-double WeightedRmsNorm(const Eigen::Ref<const VectorXd>& dx, const VectorXd& x, const std::vector<Index>& coordinates,
-                       double scale, double rtol, double atol);
+/// The weights w_i = atol + rtol s_c(i) of WeightedRmsNorm for each unknown i, s the scales of
+/// the model's coordinates (model/coordinate_scales.hpp: the model's length for positions, 1 for
+/// gradients and rotations) and `coordinates` the map from unknown i to its coordinate c(i).
+/// Unlike weights atol + rtol |x_i|, they do not depend on where the model sits or how it is
+/// turned: a coordinate that happens to be near 0 is not held to atol alone.
+VectorXd CalcIncrementWeights(const VectorXd& coordinate_scales,
+                              const std::vector<Index>& coordinates, double rtol, double atol);
+
+/// |Σ_i (q_c(i) − q₀_c(i)) r_i| (J): the work of the force rows r_i of a residual over the
+/// displacement from q₀ to q of the coordinates c(i) of the unknowns (`coordinates`); rows of r
+/// beyond them (constraint equations) are left out.
+double CalcResidualWork(const VectorXd& q, const VectorXd& q_start,
+                        const std::vector<Index>& coordinates, const VectorXd& r);
+
+/// Weighted RMS norm √(mean_i (scale dx_i / w_i)²) over the unknowns (Hairer & Wanner 1996,
+/// II.4), w from CalcIncrementWeights.
+double WeightedRmsNorm(const Eigen::Ref<const VectorXd>& dx, const VectorXd& weights, double scale);
 
 }  // namespace ancfnet

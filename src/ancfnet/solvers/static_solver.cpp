@@ -9,6 +9,7 @@
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/forces/forces.hpp"
 #include "ancfnet/forces/joint_constraints.hpp"
+#include "ancfnet/model/coordinate_scales.hpp"
 #include "ancfnet/solvers/newton.hpp"
 
 namespace ancfnet {
@@ -28,6 +29,9 @@ class LoadIncrement {
         dofs_(DofMap::FreeCoordinates(model)),
         matrix_(model, dofs_),
         constraints_(model),
+        increment_weights_(CalcIncrementWeights(CalcCoordinateScales(model), dofs_.coordinates(),
+                                                newton.relative_tolerance,
+                                                newton.absolute_tolerance)),
         q_start_(state.q),
         multipliers_start_(state.multipliers),
         residual_full_(state.q.size()) {}
@@ -72,15 +76,17 @@ class LoadIncrement {
   // The position increment, and with joints the constraint violation at the iterate the
   // increment was computed at: both must be within the tolerances.
   double IncrementNorm(const VectorXd& dx) const {
-    const double norm =
-        WeightedRmsNorm(dx.head(dofs_.num_unknowns()), state_.q, dofs_.coordinates(), 1.0,
-                        newton_.relative_tolerance, newton_.absolute_tolerance);
+    const double norm = WeightedRmsNorm(dx.head(dofs_.num_unknowns()), increment_weights_, 1.0);
     if (constraints_.empty()) return norm;
     return std::max(norm, constraints_.ScaledViolation(newton_.relative_tolerance,
                                                        newton_.absolute_tolerance));
   }
   double IncrementEnergy(const VectorXd& dx, const VectorXd& r) const {
-    return std::abs(dx.dot(r));
+    return std::abs(dx.head(dofs_.num_unknowns()).dot(r.head(dofs_.num_unknowns())));
+  }
+  // The work of the residual over the increment so far.
+  double ResidualWork(const VectorXd& r) const {
+    return CalcResidualWork(state_.q, q_start_, dofs_.coordinates(), r);
   }
   // max_i |g_i| at the current state.
   double ConstraintViolation() {
@@ -104,6 +110,7 @@ class LoadIncrement {
   SystemMatrix matrix_;
   JointConstraints constraints_;
   SparseMatrixd bordered_;
+  VectorXd increment_weights_;  // of the convergence norm, per unknown (CalcIncrementWeights)
   double load_factor_ = 0.0;
   VectorXd q_start_;
   VectorXd multipliers_start_;

@@ -51,6 +51,7 @@ class TwoUnknownProblem {
   double IncrementEnergy(const VectorXd& dx, const VectorXd& r) const {
     return std::abs(dx.dot(r));
   }
+  double ResidualWork(const VectorXd& r) const { return std::abs((x_ - initial_guess_).dot(r)); }
   double EnergyScale() const { return 1.0; }
 
   const Vector2d& x() const { return x_; }
