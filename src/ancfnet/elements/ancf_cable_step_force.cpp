@@ -29,9 +29,22 @@ void AddShapeKronecker(const Vector4d& ds, double scale, Matrix12d* k) {
 
 }  // namespace
 
-Vector12d CalcCableStepForceCorrection(const CableElementParameters& p, const Vector12d& e0,
+CableStepStart CalcCableStepStart(const CableElementParameters& p, const Vector12d& e0) {
+  CableStepStart start;
+  start.e = e0;
+  start.energy = CalcCableStrainEnergy(p, e0);
+  const GaussRule& axial = GetGaussRule(p.axial_gauss_points);
+  for (int i = 0; i < axial.size; ++i) {
+    start.axial_strain[i] = CalcCableStrain(p, e0, axial.points[i]).axial;
+    start.axial_energy[i] = CalcCableAxialEnergyDensity(p, start.axial_strain[i]);
+  }
+  return start;
+}
+
+Vector12d CalcCableStepForceCorrection(const CableElementParameters& p, const CableStepStart& start,
                                        const Vector12d& e1, const Vector12d& elastic_force,
                                        Matrix12d* jacobian) {
+  const Vector12d& e0 = start.e;
   Vector12d correction = Vector12d::Zero();
   if (jacobian) jacobian->setZero();
   const Vector12d de = e1 - e0;
@@ -41,10 +54,9 @@ Vector12d CalcCableStepForceCorrection(const CableElementParameters& p, const Ve
   const GaussRule& axial = GetGaussRule(p.axial_gauss_points);
   for (int i = 0; i < axial.size; ++i) {
     const HermiteShape shape = CalcHermiteShape(axial.points[i], p.length);
-    const Vector3d a0 = Eigen::Map<const Matrix34d>(e0.data()) * shape.ds;
     const Vector3d a1 = Eigen::Map<const Matrix34d>(e1.data()) * shape.ds;
     const Vector3d am = Eigen::Map<const Matrix34d>(em.data()) * shape.ds;
-    const double eps0 = 0.5 * (a0.squaredNorm() - 1.0);
+    const double eps0 = start.axial_strain[i];
     const double eps1 = 0.5 * (a1.squaredNorm() - 1.0);
     const double eps_m = 0.5 * (am.squaredNorm() - 1.0);
     // N̄ as a divided difference while it is well above round-off, else the force at the mean
@@ -52,8 +64,7 @@ Vector12d CalcCableStepForceCorrection(const CableElementParameters& p, const Ve
     const double change = eps1 - eps0;
     double mean_force = 0.0, dmean_dend = 0.0;
     if (std::abs(change) > 1e-7 * std::max(std::abs(eps0) + std::abs(eps1), 1e-9)) {
-      mean_force =
-          (CalcCableAxialEnergyDensity(p, eps1) - CalcCableAxialEnergyDensity(p, eps0)) / change;
+      mean_force = (CalcCableAxialEnergyDensity(p, eps1) - start.axial_energy[i]) / change;
       dmean_dend = (CalcCableAxialForce(p, eps1) - mean_force) / change;
     } else {
       mean_force = CalcCableAxialForce(p, 0.5 * (eps0 + eps1));
@@ -72,7 +83,7 @@ Vector12d CalcCableStepForceCorrection(const CableElementParameters& p, const Ve
   }
   // The bending energy's share of the error (and round-off of the axial part), along Δe; left
   // out of the Jacobian (it is of third order in Δe).
-  const double u0 = CalcCableStrainEnergy(p, e0);
+  const double u0 = start.energy;
   const double u1 = CalcCableStrainEnergy(p, e1);
   const double residual = u1 - u0 - de.dot(elastic_force + correction);
   // At round-off level of U the residual is noise, which a tiny Δe would turn into a force.

@@ -71,17 +71,18 @@ void AddPointMassMatrix(const Model& model, double scale, SystemMatrix* matrix) 
 }
 
 // ws.element_step_correction (and with `jacobian` ws.element_step_jacobian) of every cable
-// element over the step from q_start to q_end, from the elastic forces in ws.element_force.
-void CalcStepForceCorrections(const Model& model, const VectorXd& q_start, const VectorXd& q_end,
-                              bool jacobian, Workspace& ws) {
+// element over the step from ws.element_step_start to q_end, from the elastic forces in
+// ws.element_force.
+void CalcStepForceCorrections(const Model& model, const VectorXd& q_end, bool jacobian,
+                              Workspace& ws) {
   const auto& elements = model.elements();
   const Index n = static_cast<Index>(elements.size());
 #pragma omp parallel for schedule(static) if (elements.size() >= kParallelElements)
   for (Index e = 0; e < n; ++e) {
     if (elements[e].beam >= 0) continue;
     ws.element_step_correction[e] = CalcCableStepForceCorrection(
-        elements[e].parameters, model.Gather(elements[e], q_start),
-        model.Gather(elements[e], q_end), ws.element_force[e] - ws.element_viscous_force[e],
+        elements[e].parameters, ws.element_step_start[e], model.Gather(elements[e], q_end),
+        ws.element_force[e] - ws.element_viscous_force[e],
         jacobian ? &ws.element_step_jacobian[e] : nullptr);
   }
 }
@@ -107,19 +108,27 @@ void CalcInternalForces(const Model& model, const VectorXd& q, const VectorXd& v
   AddOrbitalFrameForces(model, q, v, ws);
 }
 
-void AddStepForceCorrections(const Model& model, const VectorXd& q_start, const VectorXd& q_end,
-                             Workspace& ws) {
-  CalcStepForceCorrections(model, q_start, q_end, false, ws);
+void BeginStepForceCorrections(const Model& model, const VectorXd& q_start, Workspace& ws) {
+  const auto& elements = model.elements();
+  const Index n = static_cast<Index>(elements.size());
+#pragma omp parallel for schedule(static) if (elements.size() >= kParallelElements)
+  for (Index e = 0; e < n; ++e)
+    if (elements[e].beam < 0)
+      ws.element_step_start[e] =
+          CalcCableStepStart(elements[e].parameters, model.Gather(elements[e], q_start));
+}
+
+void AddStepForceCorrections(const Model& model, const VectorXd& q_end, Workspace& ws) {
+  CalcStepForceCorrections(model, q_end, false, ws);
   const auto& elements = model.elements();
   for (std::size_t e = 0; e < elements.size(); ++e)
     if (elements[e].beam < 0)
       ScatterAdd(elements[e], ws.element_step_correction[e], &ws.internal_force);
 }
 
-void AddStepForceCorrectionJacobians(const Model& model, const VectorXd& q_start,
-                                     const VectorXd& q_end, double stiffness_weight,
-                                     Workspace& ws, SystemMatrix* matrix) {
-  CalcStepForceCorrections(model, q_start, q_end, true, ws);
+void AddStepForceCorrectionJacobians(const Model& model, const VectorXd& q_end,
+                                     double stiffness_weight, Workspace& ws, SystemMatrix* matrix) {
+  CalcStepForceCorrections(model, q_end, true, ws);
   const auto& elements = model.elements();
   for (std::size_t e = 0; e < elements.size(); ++e)
     if (elements[e].beam < 0)

@@ -14,17 +14,18 @@ namespace ancfnet {
 /// clearance joints.
 void CalcInternalForces(const Model& model, const VectorXd& q, const VectorXd& v, Workspace& ws);
 
+/// Once per step of the midpoint rule, before the corrections below: what they need of the step's
+/// start q_start (CalcCableStepStart of every cable element), into ws.element_step_start.
+void BeginStepForceCorrections(const Model& model, const VectorXd& q_start, Workspace& ws);
 /// For the midpoint rule, after CalcInternalForces at q_m = (q_start + q_end)/2: turns the cable
 /// elements' elastic forces into discrete gradients over the step, so that their work equals the
 /// change of the strain energy exactly (CalcCableStepForceCorrection; docs/theory.md,
 /// "Energy-consistent midpoint rule"). Adds to ws.internal_force.
-void AddStepForceCorrections(const Model& model, const VectorXd& q_start, const VectorXd& q_end,
-                             Workspace& ws);
+void AddStepForceCorrections(const Model& model, const VectorXd& q_end, Workspace& ws);
 /// matrix += c_K ∂ΔQ/∂q_m of those corrections (their axial part; CalcCableStepForceCorrection),
 /// after AssembleIterationMatrix at the midpoint q_m, whose element forces it uses.
-void AddStepForceCorrectionJacobians(const Model& model, const VectorXd& q_start,
-                                     const VectorXd& q_end, double stiffness_weight,
-                                     Workspace& ws, SystemMatrix* matrix);
+void AddStepForceCorrectionJacobians(const Model& model, const VectorXd& q_end,
+                                     double stiffness_weight, Workspace& ws, SystemMatrix* matrix);
 
 /// Fills ws.applied_force (point forces, point moments, distributed loads) and ws.external_force
 /// = applied + gravity, all scaled by the load factor λ (1 in dynamics).

@@ -99,6 +99,7 @@ bool ImplicitStepCore::BeginStep(double h, const State& state) {
 
 void ImplicitStepCore::SetStepEnd(const VectorXd* q_end) {
   step_end_ = q_end;
+  if (q_end) BeginStepForceCorrections(model_, previous_.q, ws_);
   if (!contact_.empty()) contact_.SetStep(previous_.q, previous_.v, q_end);
   if (!self_contact_.empty()) self_contact_.SetStep(previous_.q, q_end);
 }
@@ -134,8 +135,7 @@ const SparseMatrixd& ImplicitStepCore::CalcIterationMatrix(const VectorXd& q, co
                                                            const IterationWeights& weights) {
   AssembleIterationMatrix(model_, q, v, weights, 1.0, ws_, &iteration_matrix_);
   if (step_end_)
-    AddStepForceCorrectionJacobians(model_, previous_.q, *step_end_, weights.stiffness, ws_,
-                                    &iteration_matrix_);
+    AddStepForceCorrectionJacobians(model_, *step_end_, weights.stiffness, ws_, &iteration_matrix_);
   damping_.AddRayleighJacobian(weights.damping, &iteration_matrix_);
   if (!contact_.empty())
     contact_.AddJacobian(q, v, previous_.contact_history, weights, &iteration_matrix_);
@@ -158,7 +158,7 @@ double ImplicitStepCore::ConstraintViolation(const VectorXd& q, const VectorXd& 
 
 void ImplicitStepCore::CalcForces(const VectorXd& q, const VectorXd& v) {
   CalcInternalForces(model_, q, v, ws_);
-  if (step_end_) AddStepForceCorrections(model_, previous_.q, *step_end_, ws_);
+  if (step_end_) AddStepForceCorrections(model_, *step_end_, ws_);
   damping_.AddForces(v, ws_);
   ws_.contact_energy = 0.0;
   if (!contact_.empty()) contact_.AddForces(q, v, previous_.contact_history, ws_);

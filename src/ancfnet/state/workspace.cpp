@@ -10,6 +10,7 @@ Workspace::Workspace(const Model& model)
       distributed_force(VectorXd::Zero(model.num_dofs())),
       element_force(model.elements().size()),
       element_viscous_force(model.elements().size()),
+      element_step_start(model.elements().size()),
       element_step_correction(model.elements().size(), Vector12d::Zero()),
       element_step_jacobian(model.elements().size(), Matrix12d::Zero()),
       element_stiffness(model.elements().size()),

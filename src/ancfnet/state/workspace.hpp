@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "ancfnet/common/types.hpp"
+#include "ancfnet/elements/ancf_cable_step_force.hpp"
 #include "ancfnet/elements/beam_shape.hpp"
 #include "ancfnet/state/state.hpp"
 
@@ -26,6 +27,8 @@ struct Workspace {
   // Per element, filled by CalcInternalForces / AssembleIterationMatrix.
   std::vector<Vector12d> element_force;
   std::vector<Vector12d> element_viscous_force;
+  /// BeginStepForceCorrections: what the step-force corrections need of the step's start.
+  std::vector<CableStepStart> element_step_start;
   /// AddStepForceCorrections: what turns element_force into the discrete gradient over a step.
   std::vector<Vector12d> element_step_correction;
   std::vector<Matrix12d> element_step_jacobian;  ///< its ∂/∂q_m (AddStepForceCorrectionJacobians)
