@@ -27,30 +27,6 @@ SelfContact::SelfContact(const Model& model, double near_factor)
       filter_(model, primitives_),
       near_factor_(std::max(near_factor, 1.0)) {}
 
-SelfContact::Axis SelfContact::Locate(const SelfContactPrimitive& p, const VectorXd& q,
-                                      const VectorXd& v) const {
-  Axis axis;
-  if (p.element < 0) {
-    const Index dof = model_.point_masses()[p.point_mass].dof;
-    axis.x0 = axis.x1 = q.segment<3>(dof);
-    axis.v0 = axis.v1 = v.segment<3>(dof);
-    return axis;
-  }
-  const CableElement& element = model_.elements()[p.element];
-  axis.x0.setZero();
-  axis.x1.setZero();
-  axis.v0.setZero();
-  axis.v1.setZero();
-  for (int k = 0; k < 4; ++k) {
-    const Index dof = element.dofs[3 * k];
-    axis.x0 += p.shape0[k] * q.segment<3>(dof);
-    axis.x1 += p.shape1[k] * q.segment<3>(dof);
-    axis.v0 += p.shape0[k] * v.segment<3>(dof);
-    axis.v1 += p.shape1[k] * v.segment<3>(dof);
-  }
-  return axis;
-}
-
 int SelfContact::Blocks(const SelfContactPrimitive& p, double s, std::array<double, 4>* weight,
                         std::array<Index, 4>* dof) const {
   if (p.element < 0) {
@@ -78,8 +54,8 @@ SelfContact::PairState SelfContact::CalcPair(const Candidate& c, const VectorXd&
                                              const VectorXd& v, PairDetail detail) const {
   const SelfContactPrimitive& pa = primitives_[c.a];
   const SelfContactPrimitive& pb = primitives_[c.b];
-  const Axis a = Locate(pa, q, v);
-  const Axis b = Locate(pb, q, v);
+  const Axis a = LocateCapsuleAxis(model_, pa, q, &v);
+  const Axis b = LocateCapsuleAxis(model_, pb, q, &v);
   const CapsuleCapsuleDistance d =
       CalcCapsuleCapsuleDistance(a.x0, a.x1, pa.radius, b.x0, b.x1, pb.radius);
   PairState r;
@@ -132,8 +108,8 @@ bool SelfContact::OwnsClosestPoint(const SelfContactPrimitive& p, SegmentPart pa
   if (part == SegmentPart::kEnd) return p.next < 0;
   if (part == SegmentPart::kInterior || p.previous < 0) return true;
   // At its start: moving back along the previous capsule must not come closer.
-  const Axis here = Locate(p, q, q);
-  const Axis before = Locate(primitives_[p.previous], q, q);
+  const Axis here = LocateCapsuleAxis(model_, p, q);
+  const Axis before = LocateCapsuleAxis(model_, primitives_[p.previous], q);
   return (here.x0 - before.x0).dot(direction) <= 0.0;
 }
 
@@ -145,7 +121,7 @@ void SelfContact::FindCandidates(const State& state, double h) {
   start_x0_.resize(n);
   start_x1_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const Axis axis = Locate(primitives_[i], state.q, state.v);
+    const Axis axis = LocateCapsuleAxis(model_, primitives_[i], state.q, &state.v);
     margin_[i] = 2.0 * h * std::max(axis.v0.norm(), axis.v1.norm()) + 0.5 * primitives_[i].radius;
     boxes_[i] = Aabb::OfCapsule(axis.x0, axis.x1, primitives_[i].radius, margin_[i]);
     start_x0_[i] = axis.x0;
@@ -291,7 +267,7 @@ void SelfContact::AddJacobian(const VectorXd& q, const VectorXd& v, const Iterat
 
 std::string SelfContact::CheckStep(const VectorXd& q) const {
   for (std::size_t i = 0; i < primitives_.size(); ++i) {
-    const Axis axis = Locate(primitives_[i], q, q);
+    const Axis axis = LocateCapsuleAxis(model_, primitives_[i], q);
     const double moved = std::max((axis.x0 - start_x0_[i]).norm(), (axis.x1 - start_x1_[i]).norm());
     if (moved > margin_[i])
       return fmt::format(
@@ -339,7 +315,7 @@ void SelfContact::CollectContacts(const VectorXd& q, const VectorXd& v,
     if (!pair.force.touching) continue;
     const SelfContactPrimitive& a = primitives_[c.a];
     const SelfContactPrimitive& b = primitives_[c.b];
-    const Axis axis_b = Locate(b, q, v);
+    const Axis axis_b = LocateCapsuleAxis(model_, b, q, &v);
     ContactPoint p;
     p.point_W = (1.0 - pair.t) * axis_b.x0 + pair.t * axis_b.x1 + b.radius * pair.direction;
     p.normal_W = pair.direction;

@@ -19,6 +19,7 @@
 #include "ancfnet/contact/self_pair_jacobian.hpp"
 #include "ancfnet/forces/forces.hpp"
 #include "ancfnet/forces/self_contact_primitives.hpp"
+#include "ancfnet/model/capsule_axis.hpp"
 #include "ancfnet/model/model.hpp"
 #include "ancfnet/state/state.hpp"
 #include "ancfnet/state/workspace.hpp"
@@ -101,10 +102,8 @@ class SelfContact {
     bool coupled = false;                          // gap < g_c at the step start
     double penetration_start = 0.0;                // Penetration() at the step start
   };
-  // Axis ends of a primitive and their velocities.
-  struct Axis {
-    Vector3d x0, x1, v0, v1;
-  };
+  // Axis ends of a primitive and their velocities (LocateCapsuleAxis).
+  using Axis = CapsuleAxis;
   // One pair: closest-point parameters on each axis, the gap, the direction u from b's closest
   // point to a's, their relative velocity, and the force on a.
   struct PairState {
@@ -122,7 +121,6 @@ class SelfContact {
   // towards p), is counted by p rather than by its neighbour along the chain.
   bool OwnsClosestPoint(const SelfContactPrimitive& p, SegmentPart part, const Vector3d& direction,
                         const VectorXd& q) const;
-  Axis Locate(const SelfContactPrimitive& p, const VectorXd& q, const VectorXd& v) const;
   PairState CalcPair(const Candidate& c, const VectorXd& q, const VectorXd& v,
                      PairDetail detail) const;
   // A pair's penetration as its stored energy sees it: −gap, or at most 0 where a neighbour

@@ -49,34 +49,6 @@ Index TargetContact::ProbeOwner(const ContactProbe& probe) const {
                             : static_cast<Index>(model_.elements().size()) + probe.point_mass;
 }
 
-TargetContact::Axis TargetContact::Locate(const ContactProbe& probe, const VectorXd& q,
-                                          const VectorXd& v) const {
-  Axis axis = LocatePositions(probe, q);
-  axis.v0 = Interpolate(probe, probe.shape0, v);
-  axis.v1 = probe.xi1 == probe.xi0 ? axis.v0 : Interpolate(probe, probe.shape1, v);
-  return axis;
-}
-
-TargetContact::Axis TargetContact::LocatePositions(const ContactProbe& probe,
-                                                   const VectorXd& q) const {
-  Axis axis;
-  axis.x0 = Interpolate(probe, probe.shape0, q);
-  // An inspection sphere's axis is a point.
-  axis.x1 = probe.xi1 == probe.xi0 ? axis.x0 : Interpolate(probe, probe.shape1, q);
-  axis.v0.setZero();
-  axis.v1.setZero();
-  return axis;
-}
-
-Vector3d TargetContact::Interpolate(const ContactProbe& probe, const Vector4d& shape,
-                                    const VectorXd& values) const {
-  if (probe.element < 0) return values.segment<3>(model_.point_masses()[probe.point_mass].dof);
-  const CableElement& element = model_.elements()[probe.element];
-  Vector3d x = Vector3d::Zero();
-  for (int k = 0; k < 4; ++k) x += shape[k] * values.segment<3>(element.dofs[3 * k]);
-  return x;
-}
-
 TargetContact::TargetAxis TargetContact::InTargetFrame(const Frame& frame, const Axis& axis) {
   if (frame.body < 0) return {axis.x0, axis.x1};
   // In the body's frame: x_B = R_WBᵀ (x − x_WB).
@@ -199,7 +171,8 @@ void TargetContact::FindBodyCouplings(const VectorXd& q, const VectorXd& v, doub
     const Frame frame = CalcFrame(targets[t], q, v);
     const Index body_owner = matrix.BodyOwner(frame.body);
     for (const ContactProbe& probe : probes_) {
-      const ProbePoint point = FindProbePoint(targets[t], frame, Locate(probe, q, v));
+      const ProbePoint point =
+          FindProbePoint(targets[t], frame, LocateCapsuleAxis(model_, probe, q, &v));
       const Matrix3d& R = frame.pose.R_WB;
       const Vector3d body_velocity =
           frame.velocity.v_WB +
@@ -218,7 +191,7 @@ void TargetContact::ForEachTouchingPair(const VectorXd& q, const VectorXd& v,
   const auto& targets = model_.contact().targets;
   for (std::size_t t = 0; t < targets.size(); ++t) frames_[t] = CalcFrame(targets[t], q, v);
   for (std::size_t p = 0; p < probes_.size(); ++p) {
-    const Axis axis = Locate(probes_[p], q, v);
+    const Axis axis = LocateCapsuleAxis(model_, probes_[p], q, &v);
     for (std::size_t t = 0; t < targets.size(); ++t) {
       const std::size_t pair = p * targets.size() + t;
       const std::optional<ProbePoint> point =
@@ -242,7 +215,7 @@ void TargetContact::SetStep(const VectorXd& q_start, const VectorXd& v_start,
   for (std::size_t t = 0; t < targets.size(); ++t)
     frames_[t] = CalcFrame(targets[t], q_start, v_start);
   for (std::size_t p = 0; p < probes_.size(); ++p) {
-    const Axis axis = LocatePositions(probes_[p], q_start);
+    const Axis axis = LocateCapsuleAxis(model_, probes_[p], q_start);
     for (std::size_t t = 0; t < targets.size(); ++t) {
       const std::size_t pair = p * targets.size() + t;
       const std::optional<ProbePoint> point =
@@ -301,7 +274,7 @@ std::optional<TargetContact::PairForce> TargetContact::CalcStepPairForce(
   // One end beyond its probe's radius: its exact penetration, for F̄'s divided difference.
   if (start_depth == -kFar) {
     const Frame start = CalcFrame(target, *step_start_, *step_start_velocity_);
-    const Axis start_axis = LocatePositions(probe, *step_start_);
+    const Axis start_axis = LocateCapsuleAxis(model_, probe, *step_start_);
     start_depth = probe.radius - FindProbePoint(target, start, start_axis).distance.distance;
   }
   if (end_depth == -kFar)
@@ -336,8 +309,8 @@ void TargetContact::AddStepForces(const VectorXd& q, const VectorXd& v,
   const std::size_t num_targets = model_.contact().targets.size();
   ws.contact_energy = 0.0;
   for (std::size_t p = 0; p < probes_.size(); ++p) {
-    const Axis axis = Locate(probes_[p], q, v);
-    const Axis end_axis = LocatePositions(probes_[p], *step_end_);
+    const Axis axis = LocateCapsuleAxis(model_, probes_[p], q, &v);
+    const Axis end_axis = LocateCapsuleAxis(model_, probes_[p], *step_end_);
     for (std::size_t t = 0; t < num_targets; ++t) {
       const std::optional<PairForce> f = CalcStepPairForce(
           p, t, axis, end_axis, history[p * num_targets + t], false, &ws.contact_energy);
@@ -353,8 +326,8 @@ void TargetContact::AddStepJacobian(const VectorXd& q, const VectorXd& v,
   const std::size_t num_targets = model_.contact().targets.size();
   double energy = 0.0;
   for (std::size_t p = 0; p < probes_.size(); ++p) {
-    const Axis axis = Locate(probes_[p], q, v);
-    const Axis end_axis = LocatePositions(probes_[p], *step_end_);
+    const Axis axis = LocateCapsuleAxis(model_, probes_[p], q, &v);
+    const Axis end_axis = LocateCapsuleAxis(model_, probes_[p], *step_end_);
     for (std::size_t t = 0; t < num_targets; ++t) {
       const std::optional<PairForce> f = CalcStepPairForce(
           p, t, axis, end_axis, history[p * num_targets + t], true, &energy);
@@ -460,7 +433,7 @@ void TargetContact::UpdateHistory(const VectorXd& q, const VectorXd& v,
       model_.contact().friction && model_.contact().friction->kind == FrictionLawKind::kLuGre;
   for (std::size_t t = 0; t < targets.size(); ++t) frames_[t] = CalcFrame(targets[t], q, v);
   for (std::size_t p = 0; p < probes_.size(); ++p) {
-    const Axis axis = Locate(probes_[p], q, v);
+    const Axis axis = LocateCapsuleAxis(model_, probes_[p], q, &v);
     for (std::size_t t = 0; t < targets.size(); ++t) {
       ContactPairHistory& stored = (*history)[p * targets.size() + t];
       const ProbePoint point = FindProbePoint(targets[t], frames_[t], axis);
@@ -486,15 +459,17 @@ std::string TargetContact::CheckStep(const VectorXd& q_start, const VectorXd& v_
     const Frame end = CalcFrame(targets[t], q, v);
     for (std::size_t p = 0; p < probes_.size(); ++p) {
       const ContactProbe& probe = probes_[p];
-      const std::optional<ProbePoint> point = FindProbePointWithin(
-          p * targets.size() + t, targets[t], end, LocatePositions(probe, q), probe.radius);
+      const std::optional<ProbePoint> point =
+          FindProbePointWithin(p * targets.size() + t, targets[t], end,
+                               LocateCapsuleAxis(model_, probe, q), probe.radius);
       if (!point) continue;
       const double depth = probe.radius - point->distance.distance;
       const double limit = fraction * probe.radius;
       if (!(depth > limit)) continue;
       const double depth_start =
           probe.radius -
-          FindProbePoint(targets[t], start, LocatePositions(probe, q_start)).distance.distance;
+          FindProbePoint(targets[t], start, LocateCapsuleAxis(model_, probe, q_start))
+              .distance.distance;
       if (depth - std::max(depth_start, 0.0) <= limit) continue;
       const std::string where =
           probe.element >= 0 ? fmt::format("element {} at ξ = {:.3f}", probe.element,

@@ -16,6 +16,7 @@
 #include "ancfnet/contact/target_distance.hpp"
 #include "ancfnet/forces/forces.hpp"
 #include "ancfnet/forces/target_pair_jacobian.hpp"
+#include "ancfnet/model/capsule_axis.hpp"
 #include "ancfnet/model/contact_probes.hpp"
 #include "ancfnet/model/model.hpp"
 #include "ancfnet/model/rigid_body_kinematics.hpp"
@@ -113,10 +114,9 @@ class TargetContact {
     BodyVelocity velocity;
   };
   Frame CalcFrame(const ContactTarget& target, const VectorXd& q, const VectorXd& v) const;
-  // A probe's axis: its end points and their velocities (equal ends for a sphere).
-  struct Axis {
-    Vector3d x0, x1, v0, v1;
-  };
+  // A probe's axis: its end points and their velocities (equal ends for a sphere;
+  // LocateCapsuleAxis).
+  using Axis = CapsuleAxis;
   // The point c(t*) of a probe's axis deepest in a target, its velocity and its distance to the
   // target's surface (in world coordinates).
   struct ProbePoint {
@@ -147,12 +147,6 @@ class TargetContact {
                           const ContactPairHistory& history, bool with_jacobian) const;
   // Owner of a probe's blocks in SystemMatrix contact couplings.
   Index ProbeOwner(const ContactProbe& probe) const;
-  Axis Locate(const ContactProbe& probe, const VectorXd& q, const VectorXd& v) const;
-  // Locate without the velocities (left zero), for distances only.
-  Axis LocatePositions(const ContactProbe& probe, const VectorXd& q) const;
-  // Σ S_k values_k over the probe's blocks (its point mass's only block).
-  Vector3d Interpolate(const ContactProbe& probe, const Vector4d& shape,
-                       const VectorXd& values) const;
   // Adds a pair's force to ws (probe and body), as AddForces describes.
   void ApplyPairForce(const ContactProbe& probe, const PairForce& f, Workspace& ws) const;
   // Adds a pair's Jacobian blocks to the matrix, as AddJacobian describes.
