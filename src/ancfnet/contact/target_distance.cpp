@@ -1,5 +1,8 @@
 #include "ancfnet/contact/target_distance.hpp"
 
+#include <cmath>
+#include <limits>
+
 #include "ancfnet/contact/distance/point_box.hpp"
 #include "ancfnet/contact/distance/point_capsule.hpp"
 #include "ancfnet/contact/distance/point_cylinder.hpp"
@@ -39,6 +42,27 @@ TargetDistance CalcPointTargetDistance(const ContactTarget& t, const Vector3d& x
     }
   }
   return {};
+}
+
+TargetBoundingSphere CalcTargetBoundingSphere(const ContactTarget& t) {
+  switch (t.kind) {
+    case ContactTarget::Kind::kPlane:
+      return {t.point, std::numeric_limits<double>::infinity()};
+    case ContactTarget::Kind::kSphere:
+      return {t.point, t.radius};
+    case ContactTarget::Kind::kBox:
+      return {t.point, t.half_extents.norm()};
+    case ContactTarget::Kind::kCylinder:
+      return {t.point, std::hypot(t.half_length, t.radius)};
+    case ContactTarget::Kind::kCapsule:
+      return {t.point, t.half_length + t.radius};
+    case ContactTarget::Kind::kMesh: {
+      const Eigen::Matrix3Xd& vertices = t.mesh->mesh().vertices;
+      const Vector3d center = 0.5 * (vertices.rowwise().minCoeff() + vertices.rowwise().maxCoeff());
+      return {center, (vertices.colwise() - center).colwise().norm().maxCoeff()};
+    }
+  }
+  return {t.point, std::numeric_limits<double>::infinity()};
 }
 
 SegmentTargetDistance CalcSegmentTargetDistance(const ContactTarget& target, const Vector3d& x0,

@@ -21,6 +21,15 @@ struct TargetDistance {
 /// given in (the world, or its body's frame): contact/distance/point_*.hpp and MeshBvh.
 TargetDistance CalcPointTargetDistance(const ContactTarget& target, const Vector3d& x);
 
+/// A ball that holds a target, in the coordinates its distances are computed in (its body's frame
+/// for a target on a body): every point farther than d from `center` is at least d − radius from
+/// the target. A plane's radius is infinite.
+struct TargetBoundingSphere {
+  Vector3d center = Vector3d::Zero();
+  double radius = 0.0;  ///< m
+};
+TargetBoundingSphere CalcTargetBoundingSphere(const ContactTarget& target);
+
 /// The deepest point c(t*) = x₀ + t* (x₁ − x₀) of the segment [x₀, x₁] in the target:
 /// t* = argmin φ(c(t)) over t ∈ [0, 1], by FindSegmentMinimum on φ(t), φ' = n·Δ,
 /// φ'' = Δᵀ H Δ (Δ = x₁ − x₀) to |φ'| ≤ 10⁻¹² |Δ|. Convex targets (plane, sphere, box, cylinder,

@@ -30,17 +30,24 @@ TargetContact::TargetContact(const Model& model)
     : model_(model),
       probes_(MakeContactProbes(model)),
       frames_(model.contact().targets.size()),
-      distance_bounds_(probes_.size() * model.contact().targets.size()) {}
+      distance_bounds_(probes_.size() * model.contact().targets.size()) {
+  for (const ContactTarget& target : model.contact().targets)
+    bounding_spheres_.push_back(CalcTargetBoundingSphere(target));
+}
 
-TargetContact::Frame TargetContact::CalcFrame(const ContactTarget& target, const VectorXd& q,
+TargetContact::Frame TargetContact::CalcFrame(std::size_t t, const VectorXd& q,
                                               const VectorXd& v) const {
+  const ContactTarget& target = model_.contact().targets[t];
   Frame frame;
+  frame.bound_center = bounding_spheres_[t].center;
+  frame.bound_radius = bounding_spheres_[t].radius;
   if (target.body < 0) return frame;
   const RigidBody& body = model_.rigid_bodies()[target.body];
   frame.body = target.body;
   frame.pose = CalcBodyPose(
       body, q, body_rotation_ ? (*body_rotation_)[target.body] : body.initial_orientation);
   frame.velocity = CalcBodyVelocity(body, v);
+  frame.bound_center = frame.pose.p_WB + frame.pose.R_WB * frame.bound_center;
   return frame;
 }
 
@@ -85,6 +92,11 @@ TargetContact::ProbePoint TargetContact::FindProbePoint(const ContactTarget& tar
 std::optional<TargetContact::ProbePoint> TargetContact::FindProbePointWithin(
     std::size_t pair, const ContactTarget& target, const Frame& frame, const Axis& axis,
     double reach) const {
+  // The axis lies within |x₁ − x₀| of x₀ and the target within its ball: a lower bound of their
+  // distance without moving the axis into the target's frame.
+  if ((axis.x0 - frame.bound_center).norm() - (axis.x1 - axis.x0).norm() - frame.bound_radius >
+      reach)
+    return std::nullopt;
   const TargetAxis ends = InTargetFrame(frame, axis);
   SegmentDistanceBound& bound = distance_bounds_[pair];
   if (bound.LowerBound(ends.x0, ends.x1) > reach) return std::nullopt;
@@ -168,7 +180,7 @@ void TargetContact::FindBodyCouplings(const VectorXd& q, const VectorXd& v, doub
   const auto& targets = model_.contact().targets;
   for (std::size_t t = 0; t < targets.size(); ++t) {
     if (targets[t].body < 0) continue;
-    const Frame frame = CalcFrame(targets[t], q, v);
+    const Frame frame = CalcFrame(t, q, v);
     const Index body_owner = matrix.BodyOwner(frame.body);
     for (const ContactProbe& probe : probes_) {
       const ProbePoint point =
@@ -189,7 +201,7 @@ void TargetContact::ForEachTouchingPair(const VectorXd& q, const VectorXd& v,
                                         const std::vector<ContactPairHistory>& history,
                                         bool with_jacobian, Visit&& visit) const {
   const auto& targets = model_.contact().targets;
-  for (std::size_t t = 0; t < targets.size(); ++t) frames_[t] = CalcFrame(targets[t], q, v);
+  for (std::size_t t = 0; t < targets.size(); ++t) frames_[t] = CalcFrame(t, q, v);
   for (std::size_t p = 0; p < probes_.size(); ++p) {
     const Axis axis = LocateCapsuleAxis(model_, probes_[p], q, &v);
     for (std::size_t t = 0; t < targets.size(); ++t) {
@@ -212,8 +224,7 @@ void TargetContact::SetStep(const VectorXd& q_start, const VectorXd& v_start,
   step_end_ = q_end;
   const auto& targets = model_.contact().targets;
   start_penetration_.assign(probes_.size() * targets.size(), -kFar);
-  for (std::size_t t = 0; t < targets.size(); ++t)
-    frames_[t] = CalcFrame(targets[t], q_start, v_start);
+  for (std::size_t t = 0; t < targets.size(); ++t) frames_[t] = CalcFrame(t, q_start, v_start);
   for (std::size_t p = 0; p < probes_.size(); ++p) {
     const Axis axis = LocateCapsuleAxis(model_, probes_[p], q_start);
     for (std::size_t t = 0; t < targets.size(); ++t) {
@@ -242,8 +253,8 @@ void TargetContact::BeginStepEvaluation(const VectorXd& q, const VectorXd& v) co
   const auto& targets = model_.contact().targets;
   end_frames_.resize(targets.size());
   for (std::size_t t = 0; t < targets.size(); ++t) {
-    frames_[t] = CalcFrame(targets[t], q, v);
-    end_frames_[t] = CalcFrame(targets[t], *step_end_, v);
+    frames_[t] = CalcFrame(t, q, v);
+    end_frames_[t] = CalcFrame(t, *step_end_, v);
   }
 }
 
@@ -273,7 +284,7 @@ std::optional<TargetContact::PairForce> TargetContact::CalcStepPairForce(
   }
   // One end beyond its probe's radius: its exact penetration, for F̄'s divided difference.
   if (start_depth == -kFar) {
-    const Frame start = CalcFrame(target, *step_start_, *step_start_velocity_);
+    const Frame start = CalcFrame(t, *step_start_, *step_start_velocity_);
     const Axis start_axis = LocateCapsuleAxis(model_, probe, *step_start_);
     start_depth = probe.radius - FindProbePoint(target, start, start_axis).distance.distance;
   }
@@ -431,7 +442,7 @@ void TargetContact::UpdateHistory(const VectorXd& q, const VectorXd& v,
   const auto& targets = model_.contact().targets;
   const bool bristles =
       model_.contact().friction && model_.contact().friction->kind == FrictionLawKind::kLuGre;
-  for (std::size_t t = 0; t < targets.size(); ++t) frames_[t] = CalcFrame(targets[t], q, v);
+  for (std::size_t t = 0; t < targets.size(); ++t) frames_[t] = CalcFrame(t, q, v);
   for (std::size_t p = 0; p < probes_.size(); ++p) {
     const Axis axis = LocateCapsuleAxis(model_, probes_[p], q, &v);
     for (std::size_t t = 0; t < targets.size(); ++t) {
@@ -455,8 +466,8 @@ std::string TargetContact::CheckStep(const VectorXd& q_start, const VectorXd& v_
   if (!(fraction > 0.0)) return {};
   const auto& targets = model_.contact().targets;
   for (std::size_t t = 0; t < targets.size(); ++t) {
-    const Frame start = CalcFrame(targets[t], q_start, v_start);
-    const Frame end = CalcFrame(targets[t], q, v);
+    const Frame start = CalcFrame(t, q_start, v_start);
+    const Frame end = CalcFrame(t, q, v);
     for (std::size_t p = 0; p < probes_.size(); ++p) {
       const ContactProbe& probe = probes_[p];
       const std::optional<ProbePoint> point =

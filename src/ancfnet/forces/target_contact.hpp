@@ -107,13 +107,15 @@ class TargetContact {
     Vector3d normal = Vector3d::UnitZ();        // outward normal of the target
     TargetPairGeometry geometry;                // for the Jacobian (with_jacobian only)
   };
-  // Where a target is: fixed, or moving with its body.
+  // Where target t is: fixed, or moving with its body; and the world centre of its bounding ball.
   struct Frame {
     Index body = -1;
     BodyPose pose;
     BodyVelocity velocity;
+    Vector3d bound_center = Vector3d::Zero();
+    double bound_radius = 0.0;
   };
-  Frame CalcFrame(const ContactTarget& target, const VectorXd& q, const VectorXd& v) const;
+  Frame CalcFrame(std::size_t t, const VectorXd& q, const VectorXd& v) const;
   // A probe's axis: its end points and their velocities (equal ends for a sphere;
   // LocateCapsuleAxis).
   using Axis = CapsuleAxis;
@@ -135,8 +137,9 @@ class TargetContact {
   // FindProbePoint with the axis' ends in the target's frame already found.
   ProbePoint FindProbePoint(const ContactTarget& target, const Frame& frame, const Axis& axis,
                             const TargetAxis& ends) const;
-  // FindProbePoint for the (probe, target) pair `pair`, or nothing when its distance bound
-  // (distance_bounds_) shows it farther than `reach` (m) from the target; updates the bound.
+  // FindProbePoint for the (probe, target) pair `pair`, or nothing when the target's bounding
+  // ball or the pair's distance bound (distance_bounds_) shows it farther than `reach` (m) from
+  // the target; updates the bound.
   std::optional<ProbePoint> FindProbePointWithin(std::size_t pair, const ContactTarget& target,
                                                  const Frame& frame, const Axis& axis,
                                                  double reach) const;
@@ -186,6 +189,7 @@ class TargetContact {
   std::vector<ContactProbe> probes_;
   const std::vector<Matrix3d>* body_rotation_ = nullptr;
   double step_ = 0.0;
+  std::vector<TargetBoundingSphere> bounding_spheres_;  // per target, in its own frame
   mutable std::vector<Frame> frames_;  // per target, at the (q, v) being evaluated
   // Per (probe, target) pair: where it was when its distance was last found, to skip the
   // distance queries of pairs that cannot touch (SegmentDistanceBound).
