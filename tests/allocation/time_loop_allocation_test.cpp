@@ -223,27 +223,39 @@ TEST(TimeLoopAllocation, RigidBodyWithAttachedCable) {
 // A rope pressed onto a faceted sphere (a triangle-mesh target): the bounding-volume hierarchy's
 // query, run for every inspection sphere in every Newton iteration, allocates nothing.
 TEST(TimeLoopAllocation, GeneralizedAlphaWithMeshContact) {
-  ModelBuilder builder;
-  builder.SetGravity(Vector3d(0, 0, -9.81));
-  builder.AddCable({.name = "rope",
-                    .start = Vector3d(-0.4, 0.1, 0.00199),
-                    .end = Vector3d(0.4, -0.1, 0.00199),
-                    .num_elements = 4,
-                    .properties = MakeCableProperties({.youngs_modulus = 3e9, .density = 1140},
-                                                      MakeCircleSection(0.002))});
-  ContactSpec spec;
-  spec.normal = MakeDissipativeContactLaw(NormalLawKind::kCarvalhoMartins, 1e6, 0.3);
-  ContactTarget sphere;
-  sphere.kind = ContactTarget::Kind::kMesh;
-  // 1280 triangles, moved so that the rope's middle sphere (radius 2 mm) is 10 µm into it.
+  // 1280 triangles, its top at z = 0.
   TriangleMesh mesh = MakeIcosphere(1.0, 3);
-  const Vector3d middle(0, 0, 0.00199);
-  const double gap = MeshBvh(mesh).CalcDistance(middle).distance;
-  TransformTriangleMesh(1.0, Matrix3d::Identity(), Vector3d(0, 0, gap - 0.00199), &mesh);
-  sphere.mesh = std::make_shared<const MeshBvh>(std::move(mesh));
-  spec.targets.push_back(sphere);
-  builder.SetContact(spec);
-  const Model model = builder.Build();
+  TransformTriangleMesh(1.0, Matrix3d::Identity(), Vector3d(0, 0, -1.0), &mesh);
+  const auto sphere = std::make_shared<const MeshBvh>(std::move(mesh));
+  // The rope (radius 2 mm) at height z across it.
+  const auto make_model = [&](double z) {
+    ModelBuilder builder;
+    builder.SetGravity(Vector3d(0, 0, -9.81));
+    builder.AddCable({.name = "rope",
+                      .start = Vector3d(-0.4, 0.1, z),
+                      .end = Vector3d(0.4, -0.1, z),
+                      .num_elements = 4,
+                      .properties = MakeCableProperties({.youngs_modulus = 3e9, .density = 1140},
+                                                        MakeCircleSection(0.002))});
+    ContactSpec spec;
+    spec.normal = MakeDissipativeContactLaw(NormalLawKind::kCarvalhoMartins, 1e6, 0.3);
+    ContactTarget target;
+    target.kind = ContactTarget::Kind::kMesh;
+    target.mesh = sphere;
+    spec.targets.push_back(target);
+    builder.SetContact(spec);
+    return builder.Build();
+  };
+  // Raised from deep inside until its deepest inspection sphere starts 10 µm into the facets
+  // (the facets' vertices stand millimetres above their middles).
+  const auto deepest = [](const Model& m) {
+    const State start = MakeInitialState(m);
+    return TargetContact(m).Summarize(start.q, start.v, start.contact_history).max_penetration;
+  };
+  double z = -0.005;
+  for (int i = 0; i < 4; ++i) z += deepest(make_model(z)) - 1e-5;
+  const Model model = make_model(z);
+  ASSERT_NEAR(deepest(model), 1e-5, 1e-7);
   DynamicSettings settings;
   GeneralizedAlphaIntegrator integrator(model, settings);
   State state = MakeInitialState(model);

@@ -7,19 +7,13 @@
 #include <limits>
 
 #include "ancfnet/common/error.hpp"
-#include "ancfnet/forces/clearance_joint_forces.hpp"
 #include "ancfnet/model/rigid_body_kinematics.hpp"
 #include "ancfnet/state/rigid_body_state.hpp"
 
 namespace ancfnet {
 
 ExplicitVerletIntegrator::ExplicitVerletIntegrator(const Model& model)
-    : model_(model),
-      damping_(model),
-      contact_(model),
-      self_contact_(model),
-      ws_(model),
-      dofs_(DofMap::FreeCoordinates(model)) {
+    : model_(model), ws_(model), forces_(model, ws_), dofs_(DofMap::FreeCoordinates(model)) {
   const auto& friction = model.contact().friction;
   if (friction && friction->kind == FrictionLawKind::kLuGre)
     throw InputError(
@@ -30,14 +24,13 @@ ExplicitVerletIntegrator::ExplicitVerletIntegrator(const Model& model)
     throw InputError(
         "ancf_beam cables need an implicit integrator (generalized_alpha or implicit_midpoint), "
         "not explicit_verlet");
-  contact_.SetBodyRotations(&ws_.body_rotation);
 }
 
 bool ExplicitVerletIntegrator::Initialize(State* state) {
   if (!Prepare(*state)) return false;
   critical_step_ = EstimateCriticalStep(state->q);
   critical_step_time_ = state->t;
-  if (!self_contact_.empty()) self_contact_.FindCandidates(*state, 0.0);
+  forces_.FindContacts(*state, 0.0, /*with_step_size=*/false);
   CalcAcceleration(state->q, state->v, &state->a);
   return true;
 }
@@ -64,12 +57,7 @@ bool ExplicitVerletIntegrator::Prepare(const State& state) {
 }
 
 void ExplicitVerletIntegrator::CalcAcceleration(const VectorXd& q, const VectorXd& v, VectorXd* a) {
-  CalcInternalForces(model_, q, v, ws_);
-  damping_.AddForces(v, ws_);
-  ws_.contact_energy = 0.0;
-  if (!contact_.empty()) contact_.AddForces(q, v, contact_history_, ws_);
-  if (!self_contact_.empty()) self_contact_.AddForces(q, v, ws_);
-  CalcExternalForces(model_, q, 1.0, ws_);
+  forces_.Calc(q, v, contact_history_, 1.0, ws_);
   net_force_ = ws_.external_force - ws_.internal_force;
   dofs_.Restrict(net_force_, &rhs_);
   mass_solver_.Solve(rhs_, &a_free_);
@@ -79,7 +67,7 @@ void ExplicitVerletIntegrator::CalcAcceleration(const VectorXd& q, const VectorX
 
 StepOutcome ExplicitVerletIntegrator::Step(double h, State* state) {
   previous_ = *state;
-  if (!self_contact_.empty()) self_contact_.FindCandidates(*state, h);
+  forces_.FindContacts(*state, h, /*with_step_size=*/false);
   state->v += 0.5 * h * state->a;
   state->q += h * state->v;
   ApplyPrescribedMotion(model_.prescribed(), state->t + h, &state->q, &state->v, nullptr);
@@ -104,31 +92,21 @@ StepOutcome ExplicitVerletIntegrator::Step(double h, State* state) {
                   h, critical_step_, critical_step_time_);
     return outcome;
   }
-  if (!self_contact_.empty()) {
-    outcome.failure = self_contact_.CheckStep(state->q);
-    if (!outcome.failure.empty()) {
-      *state = previous_;
-      outcome.accepted = false;
-      return outcome;
-    }
-    self_contact_.UpdateHistory(state->q, state->v, &state->self_contact_history);
+  outcome.failure =
+      forces_.CheckStep(previous_.q, previous_.v, state->q, state->v, /*check_targets=*/false);
+  if (!outcome.failure.empty()) {
+    *state = previous_;
+    outcome.accepted = false;
+    return outcome;
   }
-  if (!contact_.empty()) {
-    contact_.UpdateHistory(state->q, state->v, &state->contact_history);
-    contact_history_ = state->contact_history;
-  }
-  UpdateClearanceJointHistory(model_, state->q, state->v, state->body_rotation,
-                              &state->joint_history);
+  forces_.UpdateHistories(state);
+  contact_history_ = state->contact_history;
   ws_.joint_history = state->joint_history;
   // Bodies: ψ_{n+1} = h ω_{n+½} is the Lie-group increment; rebase R_ref on it.
   RebaseBodyRotations(model_, state);
   ws_.body_rotation = state->body_rotation;
   // Viscous forces for the energy account at the full-step velocity.
-  CalcInternalForces(model_, state->q, state->v, ws_);
-  damping_.AddForces(state->v, ws_);
-  ws_.contact_energy = 0.0;
-  if (!contact_.empty()) contact_.AddForces(state->q, state->v, contact_history_, ws_);
-  if (!self_contact_.empty()) self_contact_.AddForces(state->q, state->v, ws_);
+  forces_.Calc(state->q, state->v, contact_history_, 1.0, ws_);
   return outcome;
 }
 

@@ -4,12 +4,9 @@
 
 #include "ancfnet/analysis/energy_tracker.hpp"
 #include "ancfnet/common/binary_archive.hpp"
-#include "ancfnet/forces/forces.hpp"
-#include "ancfnet/forces/self_contact.hpp"
-#include "ancfnet/forces/target_contact.hpp"
 #include "ancfnet/integrators/step_outcome.hpp"
-#include "ancfnet/solvers/damping_model.hpp"
 #include "ancfnet/solvers/linear_solver.hpp"
+#include "ancfnet/solvers/system_forces.hpp"
 #include "ancfnet/state/state.hpp"
 
 namespace ancfnet {
@@ -51,11 +48,9 @@ class ExplicitVerletIntegrator {
   void CalcAcceleration(const VectorXd& q, const VectorXd& v, VectorXd* a);
 
   const Model& model_;
-  DampingModel damping_;
-  TargetContact contact_;
-  SelfContact self_contact_;
-  std::vector<ContactPairHistory> contact_history_;  // the state's, at the start of the step
   Workspace ws_;
+  SystemForces forces_;
+  std::vector<ContactPairHistory> contact_history_;  // the state's, at the start of the step
   DofMap dofs_;
   SparseLinearSolver mass_solver_;
   VectorXd net_force_;  // Q_ext − Q_int, all coordinates

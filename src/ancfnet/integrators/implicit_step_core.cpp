@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "ancfnet/forces/clearance_joint_forces.hpp"
 #include "ancfnet/integrators/initial_acceleration.hpp"
 #include "ancfnet/model/coordinate_scales.hpp"
 #include "ancfnet/model/rigid_body_kinematics.hpp"
@@ -13,10 +12,8 @@ namespace ancfnet {
 
 ImplicitStepCore::ImplicitStepCore(const Model& model, const DynamicSettings& settings)
     : model_(model),
-      damping_(model),
-      contact_(model),
-      self_contact_(model, settings.contact_couplings.near_factor),
       ws_(model),
+      forces_(model, ws_, settings.contact_couplings.near_factor),
       dofs_(DofMap::FreeCoordinates(model)),
       iteration_matrix_(model, dofs_),
       constraints_(model),
@@ -31,14 +28,13 @@ ImplicitStepCore::ImplicitStepCore(const Model& model, const DynamicSettings& se
   SystemMatrix mass(model, all);
   AssembleMassMatrix(model, ws_, &mass);
   mass_ = mass.matrix();
-  contact_.SetBodyRotations(&ws_.body_rotation);
   iteration_matrix_.set_contact_coupling_settings(settings.contact_couplings);
 }
 
 bool ImplicitStepCore::Initialize(State* state) {
   TakeOver(*state);
   newton_.InvalidateJacobian();
-  if (!CalcInitialAcceleration(model_, dofs_, damping_, ws_, state)) return false;
+  if (!CalcInitialAcceleration(model_, dofs_, forces_, ws_, state)) return false;
   previous_ = *state;
   return true;
 }
@@ -75,42 +71,22 @@ bool ImplicitStepCore::BeginStep(double h, const State& state) {
   ws_.joint_history = state.joint_history;
   if (h != last_h_) newton_.InvalidateJacobian();
   last_h_ = h;
-  contact_.SetStepSize(h);
-  if (self_contact_.empty() && contact_.empty()) return false;
-  required_couplings_.clear();
-  near_couplings_.clear();
-  auto append = [](const std::vector<std::pair<Index, Index>>& from,
-                   std::vector<std::pair<Index, Index>>* to) {
-    to->insert(to->end(), from.begin(), from.end());
-  };
-  if (!self_contact_.empty()) {
-    self_contact_.FindCandidates(state, h);
-    append(self_contact_.coupled_owners(), &required_couplings_);
-    append(self_contact_.near_owners(), &near_couplings_);
-  }
-  if (!contact_.empty()) {
-    contact_.FindBodyCouplings(state.q, state.v, h, iteration_matrix_, &body_couplings_);
-    append(body_couplings_, &required_couplings_);
-  }
+  forces_.FindContacts(state, h, /*with_step_size=*/true);
+  if (!forces_.has_contact()) return false;
+  forces_.FindCouplings(state.q, state.v, h, iteration_matrix_, &required_couplings_,
+                        &near_couplings_);
   if (!iteration_matrix_.UpdateContactCouplings(required_couplings_, near_couplings_)) return false;
   newton_.InvalidatePattern();
   return true;
 }
 
 void ImplicitStepCore::SetStepEnd(const VectorXd* q_end) {
-  step_end_ = q_end;
-  if (q_end) BeginStepForceCorrections(model_, previous_.q, ws_);
-  if (!contact_.empty()) contact_.SetStep(previous_.q, previous_.v, q_end);
-  if (!self_contact_.empty()) self_contact_.SetStep(previous_.q, q_end);
+  forces_.SetStep(previous_.q, previous_.v, q_end, ws_);
 }
 
 std::string ImplicitStepCore::CheckStep(const VectorXd& q, const VectorXd& v) const {
-  if (!self_contact_.empty()) {
-    std::string failure = self_contact_.CheckStep(q);
-    if (!failure.empty()) return failure;
-  }
-  if (contact_.empty() || 0.5 * last_h_ < smallest_step_) return {};
-  return contact_.CheckStep(previous_.q, previous_.v, q, v);
+  return forces_.CheckStep(previous_.q, previous_.v, q, v,
+                           /*check_targets=*/0.5 * last_h_ >= smallest_step_);
 }
 
 void ImplicitStepCore::CalcResidual(const VectorXd& q, const VectorXd& v, const VectorXd& a,
@@ -133,13 +109,8 @@ void ImplicitStepCore::CalcResidual(const VectorXd& q, const VectorXd& v, const 
 const SparseMatrixd& ImplicitStepCore::CalcIterationMatrix(const VectorXd& q, const VectorXd& v,
                                                            const VectorXd& multipliers,
                                                            const IterationWeights& weights) {
-  AssembleIterationMatrix(model_, q, v, weights, 1.0, ws_, &iteration_matrix_);
-  if (step_end_)
-    AddStepForceCorrectionJacobians(model_, *step_end_, weights.stiffness, ws_, &iteration_matrix_);
-  damping_.AddRayleighJacobian(weights.damping, &iteration_matrix_);
-  if (!contact_.empty())
-    contact_.AddJacobian(q, v, previous_.contact_history, weights, &iteration_matrix_);
-  if (!self_contact_.empty()) self_contact_.AddJacobian(q, v, weights, &iteration_matrix_);
+  forces_.AssembleIterationMatrix(q, v, previous_.contact_history, weights, 1.0, ws_,
+                                  &iteration_matrix_);
   // The forces it leaves in ws_ are not used: Newton takes them from CalcResidual.
   if (constraints_.empty()) return iteration_matrix_.matrix();
   // Scaled index-3 form (Bottasso, Bauchau & Cardona 2007; Arnold & Brüls 2007): the
@@ -157,28 +128,11 @@ double ImplicitStepCore::ConstraintViolation(const VectorXd& q, const VectorXd& 
 }
 
 void ImplicitStepCore::CalcForces(const VectorXd& q, const VectorXd& v) {
-  CalcInternalForces(model_, q, v, ws_);
-  if (step_end_) AddStepForceCorrections(model_, *step_end_, ws_);
-  damping_.AddForces(v, ws_);
-  ws_.contact_energy = 0.0;
-  if (!contact_.empty()) contact_.AddForces(q, v, previous_.contact_history, ws_);
-  if (!self_contact_.empty()) self_contact_.AddForces(q, v, ws_);
-  CalcExternalForces(model_, q, 1.0, ws_);
+  forces_.Calc(q, v, previous_.contact_history, 1.0, ws_);
 }
 
 void ImplicitStepCore::AcceptStep(State* state) {
-  if (!contact_.empty()) {
-    contact_.UpdateHistory(state->q, state->v, &state->contact_history);
-    contact_.SetStepSize(0.0);  // ws() forces from now on: those of the accepted state
-    contact_.ClearStep();
-  }
-  step_end_ = nullptr;
-  if (!self_contact_.empty()) {
-    self_contact_.ClearStep();
-    self_contact_.UpdateHistory(state->q, state->v, &state->self_contact_history);
-  }
-  UpdateClearanceJointHistory(model_, state->q, state->v, state->body_rotation,
-                              &state->joint_history);
+  forces_.UpdateHistories(state);
   ws_.joint_history = state->joint_history;
   RebaseBodyRotations(model_, state);
   ws_.body_rotation = state->body_rotation;

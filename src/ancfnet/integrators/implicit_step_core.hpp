@@ -4,14 +4,11 @@
 /// the state at t_n while a step is attempted. Each integrator keeps only its own update formulas.
 
 #include "ancfnet/common/binary_archive.hpp"
-#include "ancfnet/forces/forces.hpp"
 #include "ancfnet/forces/joint_constraints.hpp"
-#include "ancfnet/forces/self_contact.hpp"
-#include "ancfnet/forces/target_contact.hpp"
 #include "ancfnet/solvers/analysis_settings.hpp"
-#include "ancfnet/solvers/damping_model.hpp"
 #include "ancfnet/solvers/newton.hpp"
 #include "ancfnet/solvers/solve_result.hpp"
+#include "ancfnet/solvers/system_forces.hpp"
 #include "ancfnet/state/state.hpp"
 
 namespace ancfnet {
@@ -102,13 +99,10 @@ class ImplicitStepCore {
   void TakeOver(const State& state);
 
   const Model& model_;
-  DampingModel damping_;
-  TargetContact contact_;
-  SelfContact self_contact_;
-  std::vector<std::pair<Index, Index>> body_couplings_;  // probes near targets on bodies
+  Workspace ws_;
+  SystemForces forces_;
   // Owner pairs that must be coupled in this step, and those worth coupling.
   std::vector<std::pair<Index, Index>> required_couplings_, near_couplings_;
-  Workspace ws_;
   DofMap dofs_;
   SystemMatrix iteration_matrix_;
   JointConstraints constraints_;
@@ -122,7 +116,6 @@ class ImplicitStepCore {
   double smallest_step_;  // DynamicSettings::smallest_step()
   State previous_;
   VectorXd residual_full_;
-  const VectorXd* step_end_ = nullptr;  // SetStepEnd
 };
 
 }  // namespace ancfnet

@@ -1,25 +1,15 @@
 #include "ancfnet/integrators/initial_acceleration.hpp"
 
 #include "ancfnet/assembly/system_matrix.hpp"
-#include "ancfnet/forces/forces.hpp"
 #include "ancfnet/forces/joint_constraints.hpp"
 #include "ancfnet/solvers/linear_solver.hpp"
 
 namespace ancfnet {
-namespace {
 
-void CalcForces(const Model& model, const DampingModel& damping, Workspace& ws,
-                const State& state) {
-  CalcInternalForces(model, state.q, state.v, ws);
-  damping.AddForces(state.v, ws);
-  CalcExternalForces(model, state.q, 1.0, ws);
-}
-
-}  // namespace
-
-bool CalcInitialAcceleration(const Model& model, const DofMap& dofs, const DampingModel& damping,
+bool CalcInitialAcceleration(const Model& model, const DofMap& dofs, SystemForces& forces,
                              Workspace& ws, State* state) {
-  CalcForces(model, damping, ws, *state);
+  forces.FindContacts(*state, 0.0, /*with_step_size=*/false);
+  forces.Calc(state->q, state->v, state->contact_history, 1.0, ws);
   SystemMatrix mass(model, dofs);
   AssembleMassMatrix(model, ws, &mass);
   SparseLinearSolver solver;
@@ -48,7 +38,7 @@ bool CalcInitialAcceleration(const Model& model, const DofMap& dofs, const Dampi
   velocity_rhs << VectorXd::Zero(n), -constraints.CalcRate(state->v);
   solver.Solve(velocity_rhs, &solution);
   dofs.AddExpanded(solution, 1.0, &state->v);
-  CalcForces(model, damping, ws, *state);
+  forces.Calc(state->q, state->v, state->contact_history, 1.0, ws);
   dofs.Restrict(ws.external_force - ws.internal_force, &rhs);
   constraints.Evaluate(state->q, state->v, ws.body_rotation);
   VectorXd acceleration_rhs(n + m);

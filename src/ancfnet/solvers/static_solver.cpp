@@ -7,10 +7,10 @@
 
 #include "ancfnet/analysis/energy_tracker.hpp"
 #include "ancfnet/common/error.hpp"
-#include "ancfnet/forces/forces.hpp"
 #include "ancfnet/forces/joint_constraints.hpp"
 #include "ancfnet/model/coordinate_scales.hpp"
 #include "ancfnet/solvers/newton.hpp"
+#include "ancfnet/solvers/system_forces.hpp"
 
 namespace ancfnet {
 namespace {
@@ -21,9 +21,11 @@ namespace {
 //   R = (Q_int − λ Q_ext + Gᵀ μ, g),   ∂R/∂(q, μ) = [K + ∂(Gᵀμ)/∂q  Gᵀ; G  0].
 class LoadIncrement {
  public:
-  LoadIncrement(const Model& model, const NewtonSettings& newton, Workspace& ws, State& state)
+  LoadIncrement(const Model& model, const NewtonSettings& newton, const SystemForces& forces,
+                Workspace& ws, State& state)
       : model_(model),
         newton_(newton),
+        forces_(forces),
         ws_(ws),
         state_(state),
         dofs_(DofMap::FreeCoordinates(model)),
@@ -47,8 +49,7 @@ class LoadIncrement {
     state_.multipliers = multipliers_start_;
   }
   void CalcResidual(VectorXd* r) {
-    CalcInternalForces(model_, state_.q, state_.v, ws_);
-    CalcExternalForces(model_, state_.q, load_factor_, ws_);
+    forces_.Calc(state_.q, state_.v, state_.contact_history, load_factor_, ws_);
     residual_full_ = ws_.internal_force - ws_.external_force;
     if (constraints_.empty()) {
       dofs_.Restrict(residual_full_, r);
@@ -61,8 +62,8 @@ class LoadIncrement {
     *r << residual_free_, constraints_.violation();
   }
   const SparseMatrixd& CalcIterationMatrix() {
-    AssembleIterationMatrix(model_, state_.q, state_.v, {.stiffness = 1.0}, load_factor_, ws_,
-                            &matrix_);
+    forces_.AssembleIterationMatrix(state_.q, state_.v, state_.contact_history, {.stiffness = 1.0},
+                                    load_factor_, ws_, &matrix_);
     if (constraints_.empty()) return matrix_.matrix();
     constraints_.Evaluate(state_.q, state_.v, state_.body_rotation);
     constraints_.AddGeometricStiffness(state_.multipliers, 1.0, &matrix_);
@@ -104,6 +105,7 @@ class LoadIncrement {
  private:
   const Model& model_;
   NewtonSettings newton_;
+  const SystemForces& forces_;
   Workspace& ws_;
   State& state_;
   DofMap dofs_;
@@ -133,16 +135,18 @@ SolveResult SolveStatic(const Model& model, const StaticSettings& settings,
         "static analysis: the scene has contact (targets or self_contact), which the static solver "
         "does not include; run a dynamic analysis to rest, or remove the contact section");
   Workspace ws(model);
+  // At rest (v = 0) the damping forces vanish: the damping model (the modes of modal damping)
+  // is not made.
+  const SystemForces forces(model, ws, /*near_factor=*/1.0, /*with_damping=*/false);
   state->v.setZero();
   state->a.setZero();
   state->t = 0.0;
-  CalcInternalForces(model, state->q, state->v, ws);
-  CalcExternalForces(model, state->q, 0.0, ws);
+  forces.Calc(state->q, state->v, state->contact_history, 0.0, ws);
   EnergyTracker energy(model, ws, *state, /*load_factor=*/0.0, EnergyQuadrature::kLoadPath);
   SolveResult result;
   if (!EmitOutput(output, *state, energy.account(), &result)) return result;
 
-  LoadIncrement increment(model, settings.newton, ws, *state);
+  LoadIncrement increment(model, settings.newton, forces, ws, *state);
   NewtonSolver newton(settings.newton, JacobianUpdate::kEveryIteration);
   const double nominal = 1.0 / settings.load_steps;
   double load_factor = 0.0;
@@ -175,8 +179,7 @@ SolveResult SolveStatic(const Model& model, const StaticSettings& settings,
     ++result.statistics.steps;
     if (cuts_in_a_row == 0) step = std::min(2.0 * step, nominal);
     cuts_in_a_row = 0;
-    CalcInternalForces(model, state->q, state->v, ws);
-    CalcExternalForces(model, state->q, load_factor, ws);
+    forces.Calc(state->q, state->v, state->contact_history, load_factor, ws);
     energy.Advance(model, ws, *state, load_factor);
     if (!EmitOutput(output, *state, energy.account(), &result)) return result;
     if (StopIfInterrupted(output, *state, energy.account(), /*written=*/true, &result))
