@@ -2,7 +2,7 @@
 BUILD := build/release
 JOBS ?= $(shell nproc)
 
-.PHONY: deps build demo test sanitize bench clean
+.PHONY: deps build demo test sanitize fuzz bench clean
 
 deps:
 	@scripts/install-deps.sh
@@ -22,6 +22,14 @@ sanitize: deps
 	@cmake --preset sanitize >/dev/null
 	@cmake --build build/sanitize -j $(JOBS) --target ancfnet_unit_tests
 	@ANCFNET_SOURCE_DIR=$(CURDIR) OMP_NUM_THREADS=1 build/sanitize/tests/ancfnet_unit_tests
+
+# The scene loader fuzzed with libFuzzer (clang, ASan + UBSan) for FUZZ_SECONDS (default 600):
+# scripts/run-fuzzer.sh; findings in build/fuzz/artifacts/.
+fuzz:
+	@scripts/install-deps.sh --fuzz
+	@cmake --preset fuzz >/dev/null
+	@cmake --build build/fuzz -j $(JOBS) --target ancfnet_scene_fuzzer
+	@scripts/run-fuzzer.sh build/fuzz
 
 bench: build
 	@scripts/install-deps.sh --bench

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages ancfnet needs, only those missing. Idempotent and quiet when
-# everything is already there. Usage: scripts/install-deps.sh [--bench]
+# everything is already there. Usage: scripts/install-deps.sh [--bench] [--fuzz]
 set -euo pipefail
 
 packages=(build-essential cmake libeigen3-dev libyaml-cpp-dev libcli11-dev libfmt-dev
@@ -9,7 +9,9 @@ packages=(build-essential cmake libeigen3-dev libyaml-cpp-dev libcli11-dev libfm
 for arg in "$@"; do
   case "$arg" in
     --bench) packages+=(hyperfine time) ;;
-    *) echo "install-deps.sh: unknown option '$arg' (expected --bench)" >&2; exit 2 ;;
+    # clang with libFuzzer and the sanitizers' runtimes, and clang's OpenMP (make fuzz).
+    --fuzz) packages+=(clang libclang-rt-14-dev libomp-dev) ;;
+    *) echo "install-deps.sh: unknown option '$arg' (expected --bench or --fuzz)" >&2; exit 2 ;;
   esac
 done
 

@@ -18,9 +18,12 @@ void ReadRayleigh(const YamlValue& value, ModelBuilder* builder) {
     if (map.Find("alpha") || map.Find("beta")) fit->Fail("give either alpha and beta, or fit");
     const std::vector<YamlValue> rows = fit->AsList();
     if (rows.size() != 2) fit->FailExpected("two pairs [[f₁, ζ₁], [f₂, ζ₂]]");
-    const auto [f1, z1] = ReadPairOfNumbers(rows[0]);
-    const auto [f2, z2] = ReadPairOfNumbers(rows[1]);
-    rayleigh = fit->Locate([&] { return FitRayleighDamping(f1, z1, f2, z2); });
+    // (Frequency, damping ratio) pairs, not structured bindings: clang 14 (the fuzz build's
+    // compiler) cannot capture those in a lambda.
+    const std::pair<double, double> first = ReadPairOfNumbers(rows[0]);
+    const std::pair<double, double> second = ReadPairOfNumbers(rows[1]);
+    rayleigh = fit->Locate(
+        [&] { return FitRayleighDamping(first.first, first.second, second.first, second.second); });
   } else {
     if (auto v = map.Find("alpha")) rayleigh.alpha = v->AsNonNegative();
     if (auto v = map.Find("beta")) rayleigh.beta = v->AsNonNegative();
