@@ -16,18 +16,19 @@
 #include "ancfnet/common/fnv_hash.hpp"
 #include "ancfnet/io/beam_reader.hpp"
 #include "ancfnet/io/clearance_joint_reader.hpp"
-#include "ancfnet/io/ideal_joint_reader.hpp"
 #include "ancfnet/io/closest_name.hpp"
 #include "ancfnet/io/connection_law_reader.hpp"
 #include "ancfnet/io/contact_period_check.hpp"
 #include "ancfnet/io/contact_reader.hpp"
 #include "ancfnet/io/damping_reader.hpp"
+#include "ancfnet/io/ideal_joint_reader.hpp"
 #include "ancfnet/io/net_reader.hpp"
 #include "ancfnet/io/rigid_body_reader.hpp"
 #include "ancfnet/io/scene_library.hpp"
 #include "ancfnet/io/scene_settings_reader.hpp"
 #include "ancfnet/io/slender_cables.hpp"
 #include "ancfnet/io/unique_names.hpp"
+#include "ancfnet/io/yaml_hang_guard.hpp"
 #include "ancfnet/io/yaml_reader.hpp"
 #include "ancfnet/model/model_builder.hpp"
 
@@ -456,6 +457,7 @@ constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t{64} << 20;
 
 Scene ParseScene(const std::string& yaml_text, const std::string& source_name,
                  const std::filesystem::path& scene_directory, const LoadOptions& options) {
+  RefuseYamlThatHangsTheParser(yaml_text, source_name);
   YAML::Node root;
   try {
     const std::vector<YAML::Node> documents = YAML::LoadAll(yaml_text);

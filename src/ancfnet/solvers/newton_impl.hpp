@@ -126,7 +126,7 @@ NewtonResult NewtonSolver::Iterate(Problem& problem, bool force_refresh, bool da
     if (refresh && !Refresh(problem, &result)) return result;
     linear_solver_.Solve(residual_, &increment_);
     increment_ = -increment_;
-    const double norm = problem.IncrementNorm(increment_);
+    double norm = problem.IncrementNorm(increment_);
     if (!std::isfinite(norm)) {
       result.failure = "non-finite Newton increment";
       return result;
@@ -138,24 +138,24 @@ NewtonResult NewtonSolver::Iterate(Problem& problem, bool force_refresh, bool da
       if (!Refresh(problem, &result)) return result;
       linear_solver_.Solve(residual_, &increment_);
       increment_ = -increment_;
+      norm = problem.IncrementNorm(increment_);
     }
     // |Δxᵀ R|: twice the strain energy left in the stiffest modes near the root, which a small
     // increment of a stiff system still leaves large.
     const double correction_energy = problem.IncrementEnergy(increment_, residual_);
     problem.ApplyIncrement(increment_, 1.0);
     jacobian_fresh_ = false;
-    const double full_norm = problem.IncrementNorm(increment_);
     const double step = damped ? LineSearch(problem, increment_.norm()) : 1.0;
     if (step < kMinDamping) {
       result.failure = "damped Newton step too small (no descent)";
       return result;
     }
-    previous_norm = full_norm;
+    previous_norm = norm;
     // Converged only on a full step: a small damped step says nothing about the distance left.
     // The energy test is taken with the scale at the corrected iterate.
-    at_rounding = full_norm <= kRoundingNorm;
+    at_rounding = norm <= kRoundingNorm;
     increment_converged =
-        step == 1.0 && full_norm <= 1.0 &&
+        step == 1.0 && norm <= 1.0 &&
         (at_rounding || correction_energy <= settings_.energy_tolerance * problem.EnergyScale());
   }
   result.failure = "no convergence in " + std::to_string(settings_.max_iterations) + " iterations";

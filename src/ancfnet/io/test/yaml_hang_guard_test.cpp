@@ -1,0 +1,58 @@
+// The inputs on which yaml-cpp 0.7 never returns (found by fuzzing the scene loader) are refused
+// with their line and column before it sees them, and nothing valid is refused.
+
+#include "ancfnet/io/yaml_hang_guard.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "ancfnet/common/error.hpp"
+#include "ancfnet/io/scene_loader.hpp"
+
+namespace ancfnet {
+namespace {
+
+std::string Refusal(const std::string& text) {
+  try {
+    RefuseYamlThatHangsTheParser(text, "s.yaml");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(YamlHangGuard, ADocumentStartingWithACommaIsRefusedAtIt) {
+  const std::string why = "invalid YAML: a document cannot start with ','";
+  EXPECT_NE(Refusal(",\n").find("s.yaml:1:1: " + why), std::string::npos);
+  EXPECT_NE(Refusal("# comment\n\n  ,# x\nmaterials: {}\n").find("s.yaml:3:3: " + why),
+            std::string::npos);
+  EXPECT_NE(Refusal("\xEF\xBB\xBF, a\n").find("s.yaml:1:1: " + why), std::string::npos);
+  EXPECT_NE(Refusal("%YAML 1.2\n---\n,\n").find("s.yaml:3:1: " + why), std::string::npos);
+  EXPECT_NE(Refusal("--- ,\n").find("s.yaml:1:5: " + why), std::string::npos);
+  EXPECT_NE(Refusal("a: 1\n...\n,\n").find("s.yaml:3:1: " + why), std::string::npos);
+  EXPECT_NE(Refusal("a: 1\n---\n&anchor,\n").find("s.yaml:3:8: " + why), std::string::npos);
+  EXPECT_NE(Refusal("!tag ,\n").find("s.yaml:1:6: " + why), std::string::npos);
+  EXPECT_NE(Refusal("&a\n,\n").find("s.yaml:2:1: " + why), std::string::npos);
+}
+
+TEST(YamlHangGuard, CommasInsideADocumentPass) {
+  EXPECT_EQ(Refusal("a: [1, 2]\nb: {c: 1, d: 2}\n"), "");
+  EXPECT_EQ(Refusal("a: 1\n,\n"), "");  // yaml-cpp refuses it in time
+  EXPECT_EQ(Refusal("a: |\n  ,\n---\nb: 2\n"), "");
+  EXPECT_EQ(Refusal("- &x 1\n- ,y\n"), "");
+  EXPECT_EQ(Refusal(""), "");
+}
+
+TEST(YamlHangGuard, TheSceneLoaderRefusesSuchADocumentAtOnce) {
+  try {
+    ParseScene("# scene\n, materials: {}\n", "scene.yaml");
+    FAIL() << "accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("scene.yaml:2:1: invalid YAML"), std::string::npos)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace ancfnet
