@@ -31,6 +31,10 @@ grep -ohE '[a-z_]+:' "${scenes[@]}" | sort -u | sed 's/.*/"&"/' >"$build/scene.d
 
 echo "run-fuzzer.sh: $(ls "$seeds" | wc -l) seeds, $(wc -l <"$build/scene.dict") dictionary" \
   "entries, ${seconds} s" >&2
+# In fork mode (one job) a slow unit is written to the artifacts and the fuzzing goes on: under
+# AddressSanitizer a net of 40 × 40 meshes or more builds in over 10 s (see above), which would
+# otherwise end every run early. Crashes, sanitizer reports and running out of memory still stop
+# it. Replay a slow unit with the optimised build's fuzz/ancfnet_fuzz_replay to tell the two apart.
 "$fuzzer" "$build/corpus" "$seeds" -dict="$build/scene.dict" -max_total_time="$seconds" \
   -timeout=10 -rss_limit_mb=4096 -max_len=65536 -artifact_prefix="$build/artifacts/" \
-  -print_final_stats=1
+  -fork=1 -ignore_timeouts=1 -print_final_stats=1

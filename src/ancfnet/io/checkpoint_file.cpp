@@ -44,10 +44,13 @@ void WriteCheckpointFile(const std::filesystem::path& path, const Scene& scene,
   {
     std::unique_ptr<std::FILE, FileCloser> file(std::fopen(temporary.c_str(), "wb"));
     if (!file) fail();
-    const std::vector<std::byte>& head = header.bytes();
-    if (std::fwrite(head.data(), 1, head.size(), file.get()) != head.size() ||
-        std::fwrite(payload.data(), 1, payload.size(), file.get()) != payload.size() ||
-        std::fflush(file.get()) != 0 || ::fsync(::fileno(file.get())) != 0)
+    // fwrite's buffer may not be null, which an empty vector's data() is.
+    const auto write = [&](const std::vector<std::byte>& bytes) {
+      return bytes.empty() ||
+             std::fwrite(bytes.data(), 1, bytes.size(), file.get()) == bytes.size();
+    };
+    if (!write(header.bytes()) || !write(payload) || std::fflush(file.get()) != 0 ||
+        ::fsync(::fileno(file.get())) != 0)
       fail();
     if (std::fclose(file.release()) != 0) fail();
   }

@@ -12,50 +12,127 @@ namespace {
 
 bool IsBlank(char c) { return c == ' ' || c == '\t' || c == '\r'; }
 
-// A document marker ('---' or '...') at the start of `line`, followed by a blank or the end.
-bool StartsWithDocumentMarker(std::string_view line) {
-  if (line.size() < 3 || (line.substr(0, 3) != "---" && line.substr(0, 3) != "...")) return false;
-  return line.size() == 3 || IsBlank(line[3]);
-}
+// Walks a document's text character by character, with its line and column (from 1), to the
+// point where its root node starts or ends.
+class DocumentScanner {
+ public:
+  DocumentScanner(std::string_view text, std::string_view source) : text_(text), source_(source) {
+    if (text_.substr(0, 3) == "\xEF\xBB\xBF") pos_ = line_start_ = 3;  // UTF-8 byte-order mark
+  }
+
+  void Run() {
+    while (pos_ < text_.size()) ScanDocument();
+  }
+
+ private:
+  bool AtLineStart() const { return pos_ == line_start_; }
+  // A document marker ('---' or '...') at the start of the line, followed by a blank or the end.
+  bool AtDocumentMarker() const {
+    if (!AtLineStart()) return false;
+    const std::string_view rest = text_.substr(pos_);
+    if (rest.substr(0, 3) != "---" && rest.substr(0, 3) != "...") return false;
+    return rest.size() == 3 || IsBlank(rest[3]) || rest[3] == '\n';
+  }
+  void Advance() {
+    if (text_[pos_] == '\n') {
+      ++line_;
+      line_start_ = pos_ + 1;
+    }
+    ++pos_;
+  }
+  void SkipToLineEnd() {
+    while (pos_ < text_.size() && text_[pos_] != '\n') Advance();
+  }
+  [[noreturn]] void RefuseComma(const char* where) const {
+    throw InputError(fmt::format(
+        "{}:{}:{}: invalid YAML: a ',' {} (it separates the entries of a flow collection, "
+        "[a, b] or {{a: b, c: d}})",
+        source_, line_, pos_ - line_start_ + 1, where));
+  }
+
+  // From a document's start (or a marker) to the next marker: refuses a document whose root
+  // node starts with ',' or is a flow node followed by ',' (yaml-cpp 0.7 never returns on
+  // either), and skips the rest.
+  void ScanDocument() {
+    if (AtDocumentMarker()) pos_ += 3;
+    if (!SkipToRoot()) return;
+    const char first = text_[pos_];
+    if (first == ',') RefuseComma("cannot start a document");
+    if (first == '[' || first == '{' || first == '"' || first == '\'') {
+      if (!SkipFlowRoot()) return;
+      if (!SkipToRoot()) return;  // the next significant character
+      if (text_[pos_] == ',') RefuseComma("cannot follow a document's flow root node");
+    }
+    while (pos_ < text_.size() && !AtDocumentMarker()) SkipLine();
+  }
+  void SkipLine() {
+    SkipToLineEnd();
+    if (pos_ < text_.size()) Advance();
+  }
+  // To the next character of a node, past blanks, line ends, comments, directives ('%' at a
+  // line's start), anchors (&a) and tags (!t), which yaml-cpp ends at a flow indicator ("&a,"
+  // starts with ','). False at the end of the document.
+  bool SkipToRoot() {
+    while (pos_ < text_.size()) {
+      if (AtDocumentMarker()) return false;
+      const char c = text_[pos_];
+      if (IsBlank(c) || c == '\n') {
+        Advance();
+      } else if (c == '#' || (c == '%' && AtLineStart())) {
+        SkipToLineEnd();
+      } else if (c == '&' || c == '!') {
+        while (pos_ < text_.size() && !IsBlank(text_[pos_]) && text_[pos_] != '\n' &&
+               text_[pos_] != ',')
+          Advance();
+      } else {
+        return true;
+      }
+    }
+    return false;
+  }
+  // Past a flow collection or quoted scalar that starts at pos_, its quotes and nested brackets
+  // matched; false when the document ends first.
+  bool SkipFlowRoot() {
+    int depth = 0;
+    char quote = 0;
+    while (pos_ < text_.size()) {
+      if (quote == 0 && AtDocumentMarker()) return false;
+      const char c = text_[pos_];
+      const bool after_blank = pos_ == line_start_ || IsBlank(text_[pos_ - 1]);
+      Advance();
+      if (quote == '"') {
+        if (c == '\\' && pos_ < text_.size()) Advance();  // an escaped character
+        if (c == '"') quote = 0;
+      } else if (quote == '\'') {
+        if (c == '\'' && pos_ < text_.size() && text_[pos_] == '\'')
+          Advance();  // '' inside single quotes
+        else if (c == '\'')
+          quote = 0;
+      } else if (c == '"' || c == '\'') {
+        quote = c;
+      } else if (c == '#' && after_blank) {
+        SkipToLineEnd();
+      } else if (c == '[' || c == '{') {
+        ++depth;
+      } else if (c == ']' || c == '}') {
+        --depth;
+      }
+      if (quote == 0 && depth <= 0) return true;
+    }
+    return false;
+  }
+
+  std::string_view text_;
+  std::string_view source_;
+  std::size_t pos_ = 0;
+  std::size_t line_ = 1;
+  std::size_t line_start_ = 0;
+};
 
 }  // namespace
 
 void RefuseYamlThatHangsTheParser(const std::string& yaml_text, const std::string& source_name) {
-  std::string_view text(yaml_text);
-  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // UTF-8 byte-order mark
-  bool at_document_start = true;
-  std::size_t line_number = 0;
-  while (!text.empty()) {
-    const std::size_t end = text.find('\n');
-    const std::string_view line = text.substr(0, end);
-    text.remove_prefix(end == std::string_view::npos ? text.size() : end + 1);
-    ++line_number;
-    std::size_t i = 0;
-    if (StartsWithDocumentMarker(line)) {
-      at_document_start = true;
-      i = 3;
-    } else if (!at_document_start || (!line.empty() && line[0] == '%')) {
-      continue;  // inside a document, or a directive before one
-    }
-    // The rest of the line up to the document's first node: blanks, anchors (&a) and tags (!t).
-    while (i < line.size()) {
-      if (IsBlank(line[i])) {
-        ++i;
-      } else if (line[i] == '&' || line[i] == '!') {
-        // yaml-cpp ends an anchor's name (and a tag) at a flow indicator: "&a," starts with ','.
-        while (i < line.size() && !IsBlank(line[i]) && line[i] != ',') ++i;
-      } else {
-        break;
-      }
-    }
-    if (i == line.size() || line[i] == '#') continue;  // nothing yet: the start is further on
-    if (line[i] == ',')
-      throw InputError(fmt::format(
-          "{}:{}:{}: invalid YAML: a document cannot start with ',' (it separates the entries "
-          "of a flow collection, [a, b] or {{a: b, c: d}})",
-          source_name, line_number, i + 1));
-    at_document_start = false;
-  }
+  DocumentScanner(yaml_text, source_name).Run();
 }
 
 }  // namespace ancfnet

@@ -23,7 +23,7 @@ std::string Refusal(const std::string& text) {
 }
 
 TEST(YamlHangGuard, ADocumentStartingWithACommaIsRefusedAtIt) {
-  const std::string why = "invalid YAML: a document cannot start with ','";
+  const std::string why = "invalid YAML: a ',' cannot start a document";
   EXPECT_NE(Refusal(",\n").find("s.yaml:1:1: " + why), std::string::npos);
   EXPECT_NE(Refusal("# comment\n\n  ,# x\nmaterials: {}\n").find("s.yaml:3:3: " + why),
             std::string::npos);
@@ -36,12 +36,24 @@ TEST(YamlHangGuard, ADocumentStartingWithACommaIsRefusedAtIt) {
   EXPECT_NE(Refusal("&a\n,\n").find("s.yaml:2:1: " + why), std::string::npos);
 }
 
+TEST(YamlHangGuard, AFlowRootNodeFollowedByACommaIsRefusedAtTheComma) {
+  const std::string why = "invalid YAML: a ',' cannot follow a document's flow root node";
+  EXPECT_NE(Refusal("[],").find("s.yaml:1:3: " + why), std::string::npos);
+  EXPECT_NE(Refusal("{a: [1, \"]\"]}  # c\n\n  , b\n").find("s.yaml:3:3: " + why),
+            std::string::npos);
+  EXPECT_NE(Refusal("'it''s', x\n").find("s.yaml:1:8: " + why), std::string::npos);
+  EXPECT_NE(Refusal("a: 1\n---\n\"x\\\"\",\n").find("s.yaml:3:6: " + why), std::string::npos);
+}
+
 TEST(YamlHangGuard, CommasInsideADocumentPass) {
   EXPECT_EQ(Refusal("a: [1, 2]\nb: {c: 1, d: 2}\n"), "");
   EXPECT_EQ(Refusal("a: 1\n,\n"), "");  // yaml-cpp refuses it in time
   EXPECT_EQ(Refusal("a: |\n  ,\n---\nb: 2\n"), "");
   EXPECT_EQ(Refusal("- &x 1\n- ,y\n"), "");
   EXPECT_EQ(Refusal(""), "");
+  EXPECT_EQ(Refusal("{\"materials\": {}, \"cables\": []}\n"), "");  // a JSON scene
+  EXPECT_EQ(Refusal("a: [],\nb: {},\n"), "");
+  EXPECT_EQ(Refusal("[1, 2]\n---\nx, y\n"), "");
 }
 
 TEST(YamlHangGuard, TheSceneLoaderRefusesSuchADocumentAtOnce) {
