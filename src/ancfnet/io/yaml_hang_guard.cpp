@@ -61,7 +61,22 @@ class DocumentScanner {
     if (first == '[' || first == '{' || first == '"' || first == '\'') {
       if (!SkipFlowRoot()) return;
       if (!SkipToRoot()) return;  // the next significant character
-      if (text_[pos_] == ',') RefuseComma("cannot follow a document's flow root node");
+      if (text_[pos_] == ',') RefuseComma("cannot follow a document's root node");
+    } else {
+      // A block root indented by n ends at the first line indented less (nothing inside it can
+      // be): a ',' there is outside every node.
+      const std::size_t indent = pos_ - line_start_;
+      SkipLine();
+      while (indent > 0 && pos_ < text_.size() && !AtDocumentMarker()) {
+        std::size_t i = pos_;
+        while (i < text_.size() && IsBlank(text_[i])) ++i;
+        if (i < text_.size() && text_[i] != '\n' && text_[i] != '#' && i - pos_ < indent) {
+          pos_ = i;
+          if (text_[pos_] == ',') RefuseComma("cannot follow a document's root node");
+          break;
+        }
+        SkipLine();
+      }
     }
     while (pos_ < text_.size() && !AtDocumentMarker()) SkipLine();
   }

@@ -37,12 +37,19 @@ TEST(YamlHangGuard, ADocumentStartingWithACommaIsRefusedAtIt) {
 }
 
 TEST(YamlHangGuard, AFlowRootNodeFollowedByACommaIsRefusedAtTheComma) {
-  const std::string why = "invalid YAML: a ',' cannot follow a document's flow root node";
+  const std::string why = "invalid YAML: a ',' cannot follow a document's root node";
   EXPECT_NE(Refusal("[],").find("s.yaml:1:3: " + why), std::string::npos);
   EXPECT_NE(Refusal("{a: [1, \"]\"]}  # c\n\n  , b\n").find("s.yaml:3:3: " + why),
             std::string::npos);
   EXPECT_NE(Refusal("'it''s', x\n").find("s.yaml:1:8: " + why), std::string::npos);
   EXPECT_NE(Refusal("a: 1\n---\n\"x\\\"\",\n").find("s.yaml:3:6: " + why), std::string::npos);
+}
+
+TEST(YamlHangGuard, ACommaAfterAnIndentedBlockRootIsRefusedAtIt) {
+  EXPECT_NE(Refusal("# c\n    end: [1, 0, 0]\n\n , width: 0.01}\n")
+                .find("s.yaml:4:2: invalid YAML: a ',' cannot follow a document's root node"),
+            std::string::npos);
+  EXPECT_EQ(Refusal("  a: 1\n  b: |\n    , text\n  c: [1\n    , 2]\n"), "");
 }
 
 TEST(YamlHangGuard, CommasInsideADocumentPass) {
