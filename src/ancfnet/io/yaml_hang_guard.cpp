@@ -1,9 +1,15 @@
 #include "ancfnet/io/yaml_hang_guard.hpp"
 
 #include <fmt/format.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <yaml-cpp/yaml.h>
 
+#include <chrono>
+#include <csignal>
 #include <cstddef>
 #include <string_view>
+#include <thread>
 
 #include "ancfnet/common/error.hpp"
 
@@ -144,10 +150,38 @@ class DocumentScanner {
   std::size_t line_start_ = 0;
 };
 
+// yaml-cpp reads the text in a child process, which is killed when it has not finished in time.
+void RequireYamlReaderToFinish(const std::string& yaml_text, const std::string& source_name) {
+  const pid_t child = ::fork();
+  if (child < 0) return;
+  if (child == 0) {
+    try {
+      YAML::LoadAll(yaml_text);
+    } catch (...) {
+    }
+    ::_exit(0);  // no atexit handlers, no flush of the parent's buffers
+  }
+  const int limit = kYamlParseSeconds + static_cast<int>(yaml_text.size() >> 20);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(limit);
+  int status = 0;
+  while (::waitpid(child, &status, WNOHANG) == 0) {
+    if (std::chrono::steady_clock::now() > deadline) {
+      ::kill(child, SIGKILL);
+      ::waitpid(child, &status, 0);
+      throw InputError(fmt::format(
+          "{}: invalid YAML: the YAML reader did not finish within {} s (yaml-cpp 0.7 loops on "
+          "some malformed text); check the file's syntax",
+          source_name, limit));
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+}
+
 }  // namespace
 
 void RefuseYamlThatHangsTheParser(const std::string& yaml_text, const std::string& source_name) {
   DocumentScanner(yaml_text, source_name).Run();
+  RequireYamlReaderToFinish(yaml_text, source_name);
 }
 
 }  // namespace ancfnet

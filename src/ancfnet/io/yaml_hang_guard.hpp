@@ -8,10 +8,18 @@ namespace ancfnet {
 
 /// Throws InputError "SOURCE:LINE:COLUMN: invalid YAML: ..." when a document of `yaml_text`
 /// starts with ',' (after blank and comment lines, directives, the markers '---' and '...', a
-/// byte-order mark, anchors and tags), or when its root node is a flow collection or a quoted
-/// scalar followed by ',' ("[1],", "{},", "'x',"): on such a document yaml-cpp 0.7's LoadAll
-/// never returns and allocates without bound (1.4 GB in 5 s for ",\n"). Neither is valid YAML:
-/// ',' separates the entries of a flow collection.
+/// byte-order mark, anchors and tags), when its root node is a flow collection or a quoted
+/// scalar followed by ',' ("[1],", "{},", "'x',"), or when a ',' starts a line indented less than
+/// its indented block root: on such a document yaml-cpp 0.7's LoadAll never returns and
+/// allocates without bound (1.4 GB in 5 s for ",\n"). None is valid YAML: ',' separates the
+/// entries of a flow collection. Then, for the malformed inputs no such rule foresees, it lets
+/// yaml-cpp read the text in a child process (fork) and throws InputError "SOURCE: invalid YAML:
+/// ..." when that does not finish within kYamlParseSeconds plus a second per MiB (the child is
+/// killed); a child that cannot be started leaves the text to the caller's parse.
+void RefuseYamlThatHangsTheParser(const std::string& yaml_text, const std::string& source_name);
+
+/// The time yaml-cpp is given to read a scene, beyond a second per MiB of its text (s).
+inline constexpr int kYamlParseSeconds = 2;
 void RefuseYamlThatHangsTheParser(const std::string& yaml_text, const std::string& source_name);
 
 }  // namespace ancfnet

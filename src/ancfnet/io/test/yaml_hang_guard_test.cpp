@@ -5,6 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
 #include <string>
 
 #include "ancfnet/common/error.hpp"
@@ -61,6 +65,23 @@ TEST(YamlHangGuard, CommasInsideADocumentPass) {
   EXPECT_EQ(Refusal("{\"materials\": {}, \"cables\": []}\n"), "");  // a JSON scene
   EXPECT_EQ(Refusal("a: [],\nb: {},\n"), "");
   EXPECT_EQ(Refusal("[1, 2]\n---\nx, y\n"), "");
+}
+
+// An input found by fuzzing that none of the rules above foresees: yaml-cpp reads it in a child
+// process, which is stopped after the time limit.
+TEST(YamlHangGuard, AnyInputYamlCppLoopsOnIsRefusedAfterTheTimeLimit) {
+  const char* root = std::getenv("ANCFNET_SOURCE_DIR");
+  ASSERT_NE(root, nullptr) << "ANCFNET_SOURCE_DIR must name the source tree";
+  std::ifstream in(std::string(root) + "/fuzz/regressions/yaml_cpp_hang_12a1acf0.yaml",
+                   std::ios::binary);
+  ASSERT_TRUE(in);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_NE(Refusal(text).find("s.yaml: invalid YAML: the YAML reader did not finish within 2 s"),
+            std::string::npos);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_LT(seconds, kYamlParseSeconds + 1.0);
 }
 
 TEST(YamlHangGuard, TheSceneLoaderRefusesSuchADocumentAtOnce) {
