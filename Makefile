@@ -17,15 +17,11 @@ demo: build
 test: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
-# The unit tests built with AddressSanitizer and UndefinedBehaviorSanitizer (build/sanitize), but
-# for those that build nets of 80 × 80 meshes and more: under ASan, whose realloc copies every
-# block, the model builder appends their coordinates in quadratic time (minutes; docs/reliability.md).
-SANITIZE_SKIP := HostileInput.ImplausibleValuesAreRefusedWithTheReason
+# The unit tests built with AddressSanitizer and UndefinedBehaviorSanitizer (build/sanitize).
 sanitize: deps
 	@cmake --preset sanitize >/dev/null
 	@cmake --build build/sanitize -j $(JOBS) --target ancfnet_unit_tests
-	@ANCFNET_SOURCE_DIR=$(CURDIR) OMP_NUM_THREADS=1 build/sanitize/tests/ancfnet_unit_tests \
-	  --gtest_filter=-$(SANITIZE_SKIP)
+	@ANCFNET_SOURCE_DIR=$(CURDIR) OMP_NUM_THREADS=1 build/sanitize/tests/ancfnet_unit_tests
 
 # The scene loader fuzzed with libFuzzer (clang, ASan + UBSan) for FUZZ_SECONDS (default 600):
 # scripts/run-fuzzer.sh; findings in build/fuzz/artifacts/.

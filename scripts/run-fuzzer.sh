@@ -16,14 +16,8 @@ fuzzer="$build/fuzz/ancfnet_scene_fuzzer"
 seeds="$build/seeds"
 rm -rf "$seeds"
 mkdir -p "$seeds" "$build/corpus" "$build/artifacts"
-# Not the 40 × 40 nets: under AddressSanitizer, whose realloc copies every block, appending the
-# ~20,000 coordinates of such a net one node at a time takes over 10 s (quadratic; glibc's
-# realloc grows the block in place and `ancfnet check` builds it in linear time), so every
-# mutation of them would be reported as a hang.
-scenes=("$root"/examples/*.yaml "$root"/bench/scenes/*.yaml "$root"/tests/data/*.yaml)
-for scene in "$root"/bench/net_scenes/*.yaml; do
-  [[ "$scene" == *_40.yaml ]] || scenes+=("$scene")
-done
+scenes=("$root"/examples/*.yaml "$root"/bench/scenes/*.yaml "$root"/bench/net_scenes/*.yaml
+        "$root"/tests/data/*.yaml)
 cp "${scenes[@]}" "$seeds"/
 find "$root/fuzz/regressions" -type f ! -name README.md -exec cp {} "$seeds"/ \;
 # Every key the seed scenes use, as a libFuzzer dictionary.

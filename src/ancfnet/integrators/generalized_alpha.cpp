@@ -125,7 +125,8 @@ bool GeneralizedAlphaIntegrator::Resume(const State& state, ArchiveReader* in) {
 }
 
 StepOutcome GeneralizedAlphaIntegrator::Step(double h, State* state) {
-  const bool rebuilt = core_.BeginStep(h, *state);
+  core_.BeginStep(h, *state);
+  const bool rebuilt = core_.DetectContacts(h, *state);
   StepProblem problem(*this, h, *state);
   predictor_ = Predictor::kConstantAcceleration;
   problem.Reset();

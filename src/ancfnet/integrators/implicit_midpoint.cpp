@@ -83,7 +83,8 @@ bool ImplicitMidpointIntegrator::Initialize(State* state) {
 }
 
 StepOutcome ImplicitMidpointIntegrator::Step(double h, State* state) {
-  const bool rebuilt = core_.BeginStep(h, *state);
+  core_.BeginStep(h, *state);
+  const bool rebuilt = core_.DetectContacts(h, *state);
   StepProblem problem(*this, h, *state);
   problem.Reset();
   end_ = state->q;

@@ -59,7 +59,7 @@ void ImplicitStepCore::TakeOver(const State& state) {
   ws_.joint_history = state.joint_history;
 }
 
-bool ImplicitStepCore::BeginStep(double h, const State& state) {
+void ImplicitStepCore::BeginStep(double h, const State& state) {
   previous_.t = state.t;
   previous_.q = state.q;
   previous_.v = state.v;
@@ -71,6 +71,9 @@ bool ImplicitStepCore::BeginStep(double h, const State& state) {
   ws_.joint_history = state.joint_history;
   if (h != last_h_) newton_.InvalidateJacobian();
   last_h_ = h;
+}
+
+bool ImplicitStepCore::DetectContacts(double h, const State& state) {
   forces_.FindContacts(state, h, /*with_step_size=*/true);
   if (!forces_.has_contact()) return false;
   forces_.FindCouplings(state.q, state.v, h, iteration_matrix_, &required_couplings_,

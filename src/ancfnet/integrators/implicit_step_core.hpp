@@ -29,11 +29,13 @@ class ImplicitStepCore {
   void Resume(const State& state, ArchiveReader* in);
   /// Saves the state at t_n (its contact history and body rotations included; ws() evaluates the
   /// bodies with the latter until AcceptStep); drops the factorisation when h changed (the
-  /// iteration matrix depends on h; so do the contacts' LuGre bristles, stepped over h). Finds
-  /// the self-contact pairs to watch during the step and the probes near a body, and updates the
+  /// iteration matrix depends on h; so do the contacts' LuGre bristles, stepped over h).
+  void BeginStep(double h, const State& state);
+  /// After BeginStep, contact detection for the step of size h from `state`: finds the
+  /// self-contact pairs to watch during the step and the probes near a body, and updates the
   /// contact couplings of the iteration matrix; true when that gave it a new pattern (which the
   /// linear solver then analyses anew).
-  bool BeginStep(double h, const State& state);
+  bool DetectContacts(double h, const State& state);
   /// For a scheme that evaluates the forces at the step's midpoint: from now until AcceptStep the
   /// contact forces' elastic parts are discrete gradients between the saved state and *q_end,
   /// which the integrator keeps at the end of the step it is solving for (TargetContact::SetStep;

@@ -161,7 +161,7 @@ struct DistributedLoad {
 /// body (x, ψ). A coordinate is either free (an unknown) or fixed at its initial value.
 class Model {
  public:
-  Index num_dofs() const { return static_cast<Index>(initial_positions_.size()); }
+  Index num_dofs() const { return num_dofs_; }
   Index num_nodes() const { return static_cast<Index>(nodes_.size()); }
   const std::vector<Cable>& cables() const { return cables_; }
   const std::vector<CableNode>& nodes() const { return nodes_; }
@@ -257,6 +257,10 @@ class Model {
   ContactSpec contact_;
   std::vector<bool> fixed_;
   std::vector<PrescribedBlock> prescribed_;
+  // While the model is built, the two vectors below hold spare capacity beyond num_dofs_, so that
+  // adding coordinates node by node costs linear time in all (ModelBuilder::AddCoordinates);
+  // ModelBuilder::Build trims them to num_dofs_.
+  Index num_dofs_ = 0;
   VectorXd initial_positions_;
   VectorXd initial_velocities_;
 };

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 
@@ -133,9 +134,15 @@ void ModelBuilder::SetOrbitalFrame(double mean_motion) {
 Index ModelBuilder::AddCoordinates(const VectorXd& initial_values) {
   const Index first = model_.num_dofs();
   const Index n = first + static_cast<Index>(initial_values.size());
-  model_.initial_positions_.conservativeResize(n);
-  model_.initial_positions_.tail(initial_values.size()) = initial_values;
-  model_.initial_velocities_.conservativeResizeLike(VectorXd::Zero(n));
+  if (n > model_.initial_positions_.size()) {
+    // Geometric growth: a net of N nodes is appended in O(N), not O(N²) copies.
+    const Index capacity = std::max<Index>(n, 2 * model_.initial_positions_.size());
+    model_.initial_positions_.conservativeResize(capacity);
+    model_.initial_velocities_.conservativeResize(capacity);
+  }
+  model_.initial_positions_.segment(first, initial_values.size()) = initial_values;
+  model_.initial_velocities_.segment(first, initial_values.size()).setZero();
+  model_.num_dofs_ = n;
   model_.fixed_.resize(n, false);
   return first;
 }
@@ -158,6 +165,8 @@ Model ModelBuilder::Build() const {
   if (!model_.beam_elements_.empty() && model_.orbital_frame_)
     throw InputError("ancf_beam cables are not available in an orbital (Hill) frame yet");
   Model model = model_;
+  model.initial_positions_.conservativeResize(model.num_dofs_);
+  model.initial_velocities_.conservativeResize(model.num_dofs_);
   // A fixed coordinate does not move, unless it belongs to a moving point mass.
   for (Index i = 0; i < model.num_dofs(); ++i)
     if (model.fixed_[i]) model.initial_velocities_[i] = 0.0;

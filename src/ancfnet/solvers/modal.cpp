@@ -15,6 +15,7 @@
 #include "ancfnet/forces/joint_constraints.hpp"
 #include "ancfnet/solvers/damping_model.hpp"
 #include "ancfnet/solvers/linear_solver.hpp"
+#include "ancfnet/solvers/system_forces.hpp"
 
 namespace ancfnet {
 namespace {
@@ -102,16 +103,22 @@ LinearSystem Linearise(const Model& model, const DofMap& dofs, const VectorXd& q
     throw InputError(
         "modal analysis: the scene has contact (targets or self_contact), which the linearisation "
         "does not include; remove the contact section to find the free modes");
+  // K and C are the Jacobian of the forces every analysis takes (SystemForces) at rest in the
+  // configuration q. Its own damping model is left out: the caller's (possibly none) is the one
+  // whose modes are asked for.
   Workspace ws(model);
+  SystemForces forces(model, ws, /*near_factor=*/1.0, /*with_damping=*/false);
   SystemMatrix matrix(model, dofs);
   const VectorXd rest = VectorXd::Zero(model.num_dofs());
-  CalcExternalForces(model, q, 1.0, ws);
+  const std::vector<ContactPairHistory> no_contact;
+  forces.Calc(q, rest, no_contact, 1.0, ws);
+  auto assemble = [&](const IterationWeights& weights) {
+    forces.AssembleIterationMatrix(q, rest, no_contact, weights, 1.0, ws, &matrix);
+  };
   LinearSystem system;
-  AssembleIterationMatrix(model, q, rest, {.mass = 0.0, .damping = 0.0, .stiffness = 1.0}, 1.0, ws,
-                          &matrix);
+  assemble({.mass = 0.0, .damping = 0.0, .stiffness = 1.0});
   system.stiffness = 0.5 * (matrix.matrix() + SparseMatrixd(matrix.matrix().transpose()));
-  AssembleIterationMatrix(model, q, rest, {.mass = 0.0, .damping = 1.0, .stiffness = 0.0}, 1.0, ws,
-                          &matrix);
+  assemble({.mass = 0.0, .damping = 1.0, .stiffness = 0.0});
   if (damping) damping->AddRayleighJacobian(1.0, &matrix);
   system.damping = matrix.matrix();
   AssembleMassMatrix(model, ws, &matrix);
