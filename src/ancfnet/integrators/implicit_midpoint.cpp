@@ -114,9 +114,13 @@ StepOutcome ImplicitMidpointIntegrator::Step(double h, State* state) {
     return outcome;
   }
   // Forces at the converged midpoint, for the energy account (before the bodies' rotations are
-  // rebased: ψ_{n+½} is relative to R_ref of t_n).
+  // rebased: ψ_{n+½} is relative to R_ref of t_n), and the drive's there: the residual's rows of
+  // the prescribed coordinates, M a + Q_int − Q_ext at (q_{n+½}, v_{n+½}) with the step's mean
+  // acceleration, whose work over q_{n+1} − q_n closes the discrete kinetic-energy balance.
   end_ = state->q;
   core_.CalcForces(midpoint_.q, midpoint_.v);
+  midpoint_.a = state->a;
+  core_.CalcDriveForce(midpoint_);
   core_.AcceptStep(state);
   return outcome;
 }
