@@ -14,11 +14,12 @@ namespace ancfnet {
 /// allocates without bound (1.4 GB in 5 s for ",\n"). None is valid YAML: ',' separates the
 /// entries of a flow collection. Then, for the malformed inputs no such rule foresees, it lets
 /// yaml-cpp read the text in a child process (fork) and throws InputError "SOURCE: invalid YAML:
-/// ..." when that does not finish within kYamlParseSeconds plus a second per MiB (the child is
-/// killed); a child that cannot be started leaves the text to the caller's parse.
+/// ..." when that does not finish within kYamlParseSeconds plus a second per MiB of CPU time (the
+/// kernel stops the child); a child that cannot be started leaves the text to the caller's
+/// parse.
 void RefuseYamlThatHangsTheParser(const std::string& yaml_text, const std::string& source_name);
 
-/// The time yaml-cpp is given to read a scene, beyond a second per MiB of its text (s).
+/// The CPU time yaml-cpp is given to read a scene, beyond a second per MiB of its text (s).
 inline constexpr int kYamlParseSeconds = 2;
 void RefuseYamlThatHangsTheParser(const std::string& yaml_text, const std::string& source_name);
 

@@ -68,7 +68,8 @@ TEST(YamlHangGuard, CommasInsideADocumentPass) {
 }
 
 // An input found by fuzzing that none of the rules above foresees: yaml-cpp reads it in a child
-// process, which is stopped after the time limit.
+// process, which is stopped after the limit of CPU time; on a machine that is not overloaded the
+// wall-clock time is about the same.
 TEST(YamlHangGuard, AnyInputYamlCppLoopsOnIsRefusedAfterTheTimeLimit) {
   const char* root = std::getenv("ANCFNET_SOURCE_DIR");
   ASSERT_NE(root, nullptr) << "ANCFNET_SOURCE_DIR must name the source tree";
@@ -77,11 +78,12 @@ TEST(YamlHangGuard, AnyInputYamlCppLoopsOnIsRefusedAfterTheTimeLimit) {
   ASSERT_TRUE(in);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const auto start = std::chrono::steady_clock::now();
-  EXPECT_NE(Refusal(text).find("s.yaml: invalid YAML: the YAML reader did not finish within 2 s"),
+  EXPECT_NE(Refusal(text).find(
+                "s.yaml: invalid YAML: the YAML reader did not finish within 2 s of CPU time"),
             std::string::npos);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  EXPECT_LT(seconds, kYamlParseSeconds + 1.0);
+  EXPECT_LT(seconds, 5.0 * kYamlParseSeconds);
 }
 
 TEST(YamlHangGuard, TheSceneLoaderRefusesSuchADocumentAtOnce) {
