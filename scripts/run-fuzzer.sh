@@ -25,10 +25,10 @@ grep -ohE '[a-z_]+:' "${scenes[@]}" | sort -u | sed 's/.*/"&"/' >"$build/scene.d
 
 echo "run-fuzzer.sh: $(ls "$seeds" | wc -l) seeds, $(wc -l <"$build/scene.dict") dictionary" \
   "entries, ${seconds} s" >&2
-# In fork mode (one job) a slow unit is written to the artifacts and the fuzzing goes on: under
-# AddressSanitizer a net of 40 × 40 meshes or more builds in over 10 s (see above), which would
-# otherwise end every run early. Crashes, sanitizer reports and running out of memory still stop
-# it. Replay a slow unit with the optimised build's fuzz/ancfnet_fuzz_replay to tell the two apart.
+# In fork mode (one job) a slow unit (over 10 s) is written to the artifacts and the fuzzing goes
+# on, so that one slow input does not end the run. Crashes, sanitizer reports and running out of
+# memory still stop it. Replay a slow unit with the optimised build's fuzz/ancfnet_fuzz_replay to
+# tell a hang from an input that is only slow under the sanitizers.
 "$fuzzer" "$build/corpus" "$seeds" -dict="$build/scene.dict" -max_total_time="$seconds" \
   -timeout=10 -rss_limit_mb=4096 -max_len=65536 -artifact_prefix="$build/artifacts/" \
   -fork=1 -ignore_timeouts=1 -print_final_stats=1
