@@ -21,6 +21,5 @@ void RefuseYamlThatHangsTheParser(const std::string& yaml_text, const std::strin
 
 /// The CPU time yaml-cpp is given to read a scene, beyond a second per MiB of its text (s).
 inline constexpr int kYamlParseSeconds = 2;
-void RefuseYamlThatHangsTheParser(const std::string& yaml_text, const std::string& source_name);
 
 }  // namespace ancfnet

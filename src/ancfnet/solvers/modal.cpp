@@ -111,7 +111,6 @@ LinearSystem Linearise(const Model& model, const DofMap& dofs, const VectorXd& q
   SystemMatrix matrix(model, dofs);
   const VectorXd rest = VectorXd::Zero(model.num_dofs());
   const std::vector<ContactPairHistory> no_contact;
-  forces.Calc(q, rest, no_contact, 1.0, ws);
   auto assemble = [&](const IterationWeights& weights) {
     forces.AssembleIterationMatrix(q, rest, no_contact, weights, 1.0, ws, &matrix);
   };
