@@ -24,8 +24,8 @@ Workspace::Workspace(const Model& model)
       internal_force(VectorXd::Zero(model.num_dofs())),
       viscous_force(VectorXd::Zero(model.num_dofs())),
       applied_force(VectorXd::Zero(model.num_dofs())),
-      drive_force(VectorXd::Zero(model.num_dofs())),
-      external_force(VectorXd::Zero(model.num_dofs())) {
+      external_force(VectorXd::Zero(model.num_dofs())),
+      drive_force(VectorXd::Zero(model.num_dofs())) {
   const auto& elements = model.elements();
   for (std::size_t e = 0; e < elements.size(); ++e) {
     const CableElementParameters& p = elements[e].parameters;

@@ -75,4 +75,33 @@ PointTriangleDistance CalcPointTriangleDistance(const Vector3d& p, const Vector3
   return out;
 }
 
+double CalcPointTriangleSquaredDistance(const Vector3d& p, const Vector3d& a, const Vector3d& b,
+                                        const Vector3d& c) {
+  const Vector3d ab = b - a, ac = c - a;
+  const Vector3d ap = p - a;
+  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
+  if (d1 <= 0.0 && d2 <= 0.0) return ap.squaredNorm();  // vertex a
+  const Vector3d bp = p - b;
+  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
+  if (d3 >= 0.0 && d4 <= d3) return bp.squaredNorm();  // vertex b
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0)  // edge ab
+    return (ap - d1 / (d1 - d3) * ab).squaredNorm();
+  const Vector3d cp = p - c;
+  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
+  if (d6 >= 0.0 && d5 <= d6) return cp.squaredNorm();  // vertex c
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0)  // edge ac
+    return (ap - d2 / (d2 - d6) * ac).squaredNorm();
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0.0 && d4 - d3 >= 0.0 && d5 - d6 >= 0.0)  // edge bc
+    return (bp - (d4 - d3) / ((d4 - d3) + (d5 - d6)) * (c - b)).squaredNorm();
+  // The face: barycentric (va, vb, vc) / (va + vb + vc).
+  const double sum = va + vb + vc;
+  const double distance2 = (ap - (vb / sum) * ab - (vc / sum) * ac).squaredNorm();
+  if (std::isfinite(distance2)) return distance2;
+  const double d = CalcPointTriangleDistance(p, a, b, c).distance;
+  return d * d;
+}
+
 }  // namespace ancfnet

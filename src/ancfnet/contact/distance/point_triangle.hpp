@@ -42,4 +42,12 @@ struct PointTriangleDistance {
 PointTriangleDistance CalcPointTriangleDistance(const Vector3d& p, const Vector3d& a,
                                                 const Vector3d& b, const Vector3d& c);
 
+/// |p − x|² of the same closest point x, and nothing else: what a search over many triangles
+/// compares (a fraction of the cost of CalcPointTriangleDistance, which the search then calls
+/// once, for the nearest). The closest point by Ericson's (2005, §5.1.5) Voronoi tests on the
+/// dot products d₁ … d₆ of the edges with p − a, p − b, p − c. A degenerate triangle (whose
+/// face test divides by zero) falls back to CalcPointTriangleDistance.
+double CalcPointTriangleSquaredDistance(const Vector3d& p, const Vector3d& a, const Vector3d& b,
+                                        const Vector3d& c);
+
 }  // namespace ancfnet

@@ -87,18 +87,19 @@ MeshDistance MeshBvh::CalcDistance(const Vector3d& p) const {
   stack[top++] = {0, BoxDistance2(p, nodes_[0].lower, nodes_[0].upper)};
   double best2 = std::numeric_limits<double>::infinity();
   Index best = -1;
-  PointTriangleDistance best_distance;
   while (top > 0) {
     const auto [index, box2] = stack[--top];
     if (box2 >= best2) continue;
     const Node& node = nodes_[index];
     if (node.count > 0) {
+      // Squared distances only; the closest point and its derivatives for the nearest alone.
       for (int i = node.first; i < node.first + node.count; ++i) {
-        const PointTriangleDistance d = TriangleDistance(mesh_, order_[i], p);
-        if (d.distance * d.distance < best2) {
-          best2 = d.distance * d.distance;
+        const auto tri = mesh_.triangles.col(order_[i]);
+        const double d2 = CalcPointTriangleSquaredDistance(
+            p, mesh_.vertices.col(tri[0]), mesh_.vertices.col(tri[1]), mesh_.vertices.col(tri[2]));
+        if (d2 < best2) {
+          best2 = d2;
           best = order_[i];
-          best_distance = d;
         }
       }
       continue;
@@ -115,7 +116,7 @@ MeshDistance MeshBvh::CalcDistance(const Vector3d& p) const {
       if (right2 < best2) stack[top++] = {right, right2};
     }
   }
-  return Finish(p, best, best_distance);
+  return Finish(p, best, best < 0 ? PointTriangleDistance{} : TriangleDistance(mesh_, best, p));
 }
 
 MeshDistance MeshBvh::CalcDistanceBruteForce(const Vector3d& p) const {

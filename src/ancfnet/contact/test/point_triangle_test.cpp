@@ -6,6 +6,7 @@
 #include <cmath>
 #include <iostream>
 #include <random>
+#include <tuple>
 
 #include "ancfnet/contact/test/distance_test_helpers.hpp"
 
@@ -98,6 +99,32 @@ TEST(PointTriangleDistance, GradientMatchesFiniteDifferences) {
   EXPECT_GT(checked, 150);
   std::cout << "[measured] point-triangle: gradient FD error max " << worst << " over " << checked
             << " configurations\n";
+}
+
+TEST(PointTriangleDistance, SquaredDistanceMatchesTheFullQuery) {
+  std::mt19937 rng(43);
+  double worst = 0.0;
+  for (int k = 0; k < 2000; ++k) {
+    const Vector3d a = RandomVector(&rng, -1, 1), b = RandomVector(&rng, -1, 1),
+                   c = RandomVector(&rng, -1, 1);
+    const Vector3d p = RandomVector(&rng, -1.5, 1.5);
+    const double d = CalcPointTriangleDistance(p, a, b, c).distance;
+    const double error = std::abs(CalcPointTriangleSquaredDistance(p, a, b, c) - d * d);
+    worst = std::max(worst, error);
+    EXPECT_LT(error, 1e-13 * (1.0 + d * d)) << "configuration " << k;
+  }
+  // Degenerate triangles (collinear, two or three vertices equal) and a point on the face.
+  const Vector3d a(0, 0, 0), b(1, 0, 0);
+  for (const auto& [p, c, d] : std::array<std::tuple<Vector3d, Vector3d, double>, 5>{{
+           {Vector3d(0.5, 1, 0), Vector3d(2, 0, 0), 1.0},
+           {Vector3d(3, 0, 0), Vector3d(2, 0, 0), 1.0},
+           {Vector3d(0, 0, 2), a, 2.0},
+           {Vector3d(0.5, 0, 0.5), b, 0.5},
+           {Vector3d(0.2, 0.2, 0), Vector3d(0, 1, 0), 0.0},
+       }})
+    EXPECT_NEAR(CalcPointTriangleSquaredDistance(p, a, b, c), d * d, 1e-15);
+  EXPECT_NEAR(CalcPointTriangleSquaredDistance(Vector3d(0, 0, 2), a, a, a), 4.0, 1e-15);
+  std::cout << "[measured] point-triangle: |squared query - d²| max " << worst << "\n";
 }
 
 TEST(PointTriangleDistance, DegenerateInputIsFinite) {
