@@ -19,11 +19,14 @@ struct SegmentDistanceBound {
   Vector3d x1 = Vector3d::Zero();
   double distance = -std::numeric_limits<double>::infinity();
 
-  /// The lower bound (m) for the segment now at y₀, y₁, less 1e-9 m for the rounding of the
-  /// distances it compares.
-  double LowerBound(const Vector3d& y0, const Vector3d& y1) const {
+  /// Whether the bound for the segment now at y₀, y₁, less 1e-9 m for the rounding of the
+  /// distances it compares, exceeds `reach` (m): d − 10⁻⁹ − reach > max(|y₀ − x₀|, |y₁ − x₁|),
+  /// compared squared (no square root: the test runs for every probe and target at every residual).
+  bool ShowsFartherThan(const Vector3d& y0, const Vector3d& y1, double reach) const {
     constexpr double kRounding = 1e-9;
-    return distance - std::max((y0 - x0).norm(), (y1 - x1).norm()) - kRounding;
+    const double margin = distance - kRounding - reach;
+    return margin > 0.0 &&
+           std::max((y0 - x0).squaredNorm(), (y1 - x1).squaredNorm()) < margin * margin;
   }
 };
 

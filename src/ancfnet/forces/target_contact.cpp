@@ -92,14 +92,17 @@ TargetContact::ProbePoint TargetContact::FindProbePoint(const ContactTarget& tar
 std::optional<TargetContact::ProbePoint> TargetContact::FindProbePointWithin(
     std::size_t pair, const ContactTarget& target, const Frame& frame, const Axis& axis,
     double reach) const {
-  // The axis lies within |x₁ − x₀| of x₀ and the target within its ball: a lower bound of their
-  // distance without moving the axis into the target's frame.
-  if ((axis.x0 - frame.bound_center).norm() - (axis.x1 - axis.x0).norm() - frame.bound_radius >
-      reach)
-    return std::nullopt;
+  // The axis lies in the box its ends span and the target in its ball: the distance of the box
+  // from the ball is a lower bound of theirs, without a square root and without moving the axis
+  // into the target's frame (the test that runs for every probe and target at every residual).
+  const Vector3d& c = frame.bound_center;
+  const double outside2 =
+      (c - c.cwiseMax(axis.x0.cwiseMin(axis.x1)).cwiseMin(axis.x0.cwiseMax(axis.x1))).squaredNorm();
+  const double limit = frame.bound_radius + reach;
+  if (limit < 0.0 || outside2 > limit * limit) return std::nullopt;
   const TargetAxis ends = InTargetFrame(frame, axis);
   SegmentDistanceBound& bound = distance_bounds_[pair];
-  if (bound.LowerBound(ends.x0, ends.x1) > reach) return std::nullopt;
+  if (bound.ShowsFartherThan(ends.x0, ends.x1, reach)) return std::nullopt;
   ProbePoint point = FindProbePoint(target, frame, axis, ends);
   // A capsule's minimum over a mesh is searched on a few intervals and may be a local one: its
   // distance is no bound, and such pairs are always searched.

@@ -1,7 +1,7 @@
-// The distance bound of a moving segment (contact/segment_distance_bound.hpp) never exceeds the
-// distance it bounds: segments and points on a random walk through a box and a closed faceted
-// sphere (inside included, where the distance is negative), the bound from the previous
-// position against the distance found now.
+// The distance bound of a moving segment (contact/segment_distance_bound.hpp) never shows a pair
+// farther than a reach it is within: segments and points on a random walk through a box and a
+// closed faceted sphere (inside included, where the distance is negative), the bound from the
+// previous position against the distance found now.
 
 #include "ancfnet/contact/segment_distance_bound.hpp"
 
@@ -30,11 +30,11 @@ ContactTarget FacetedSphere() {
   return t;
 }
 
-// Walks a segment of the given length (0: a point) in steps of up to `stride` and returns the
-// largest excess of the bound over the distance found after each step, and how many steps the
-// bound alone showed apart from `reach`.
+// Walks a segment of the given length (0: a point) in steps of up to `stride` and returns how
+// many steps the bound from the previous position showed farther than `reach` although the
+// distance found now is not (wrong), and how many it showed farther (apart).
 struct WalkResult {
-  double largest_excess = -1.0;
+  int wrong = 0;
   int apart = 0;
 };
 WalkResult Walk(const ContactTarget& target, double length, double stride, double reach) {
@@ -50,10 +50,11 @@ WalkResult Walk(const ContactTarget& target, double length, double stride, doubl
                             .cwiseMin(0.6);
     const Vector3d y1 =
         y0 + length * Vector3d(uniform(random), uniform(random), uniform(random)).normalized();
-    const double lower = bound.LowerBound(y0, y1);
     const double distance = CalcSegmentTargetDistance(target, y0, y1).distance;
-    result.largest_excess = std::max(result.largest_excess, lower - distance);
-    if (lower > reach) ++result.apart;
+    if (bound.ShowsFartherThan(y0, y1, reach)) {
+      ++result.apart;
+      if (!(distance > reach)) ++result.wrong;
+    }
     bound = {y0, y1, distance};
     x0 = y0;
     x1 = y1;
@@ -63,21 +64,25 @@ WalkResult Walk(const ContactTarget& target, double length, double stride, doubl
 
 TEST(SegmentDistanceBound, NeverExceedsTheDistanceToABox) {
   for (const double length : {0.0, 0.05}) {
-    const WalkResult r = Walk(Box(), length, 0.02, 0.01);
-    EXPECT_LE(r.largest_excess, 0.0) << "length " << length;
-    EXPECT_GT(r.apart, 400) << "the walk should mostly stay apart";
+    for (const double reach : {0.0, 0.01, 0.1}) {
+      const WalkResult r = Walk(Box(), length, 0.02, reach);
+      EXPECT_EQ(r.wrong, 0) << "length " << length << ", reach " << reach;
+      EXPECT_GT(r.apart, 100) << "the walk should mostly stay apart";
+    }
   }
 }
 
 TEST(SegmentDistanceBound, NeverExceedsTheSignedDistanceToAClosedMesh) {
-  const WalkResult r = Walk(FacetedSphere(), 0.0, 0.02, 0.01);
-  EXPECT_LE(r.largest_excess, 0.0);
-  EXPECT_GT(r.apart, 400);
+  for (const double reach : {-0.05, 0.0, 0.01, 0.1}) {
+    const WalkResult r = Walk(FacetedSphere(), 0.0, 0.02, reach);
+    EXPECT_EQ(r.wrong, 0) << "reach " << reach;
+    EXPECT_GT(r.apart, 100) << "reach " << reach;
+  }
 }
 
 TEST(SegmentDistanceBound, WithoutADistanceItBoundsNothing) {
   const SegmentDistanceBound bound;
-  EXPECT_FALSE(bound.LowerBound(Vector3d::Zero(), Vector3d::UnitX()) > -1e300);
+  EXPECT_FALSE(bound.ShowsFartherThan(Vector3d::Zero(), Vector3d::UnitX(), -1e300));
 }
 
 }  // namespace
