@@ -1,5 +1,6 @@
 #include "ancfnet/contact/target_distance.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -69,6 +70,7 @@ SegmentTargetDistance CalcSegmentTargetDistance(const ContactTarget& target, con
                                                 const Vector3d& x1) {
   const Vector3d delta = x1 - x0;
   SegmentTargetDistance r;
+  double sampled_bound = std::numeric_limits<double>::infinity();
   if (delta.squaredNorm() > 0.0) {
     const auto evaluate = [&](double t) {
       const TargetDistance d = CalcPointTargetDistance(target, x0 + t * delta);
@@ -80,8 +82,10 @@ SegmentTargetDistance CalcSegmentTargetDistance(const ContactTarget& target, con
     const SegmentMinimum m = FindSegmentMinimum(evaluate, intervals, 1e-12 * delta.norm());
     r.t = m.t;
     r.evaluations = m.evaluations + 1;
+    if (intervals > 1) sampled_bound = m.lowest_sampled_value - delta.norm() / (2.0 * intervals);
   }
   static_cast<TargetDistance&>(r) = CalcPointTargetDistance(target, x0 + r.t * delta);
+  r.lower_bound = std::min(r.distance, sampled_bound);
   return r;
 }
 

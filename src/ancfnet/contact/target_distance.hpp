@@ -39,6 +39,11 @@ TargetBoundingSphere CalcTargetBoundingSphere(const ContactTarget& target);
 struct SegmentTargetDistance : TargetDistance {
   double t = 0.0;       ///< t* ∈ [0, 1]
   int evaluations = 1;  ///< point queries made
+  /// No more than the global minimum of φ on the segment (m): φ(c(t*)) for a convex target or a
+  /// point; on a mesh, whose search may stop in a local minimum, the lowest of the m + 1 samples
+  /// less |Δ|/(2m), as φ is 1-Lipschitz and every point of the segment lies within |Δ|/(2m) of a
+  /// sample.
+  double lower_bound = 0.0;
 };
 SegmentTargetDistance CalcSegmentTargetDistance(const ContactTarget& target, const Vector3d& x0,
                                                 const Vector3d& x1);

@@ -86,6 +86,7 @@ TargetContact::ProbePoint TargetContact::FindProbePoint(const ContactTarget& tar
   point.axis = axis.x1 - axis.x0;
   point.axis_rate = axis.v1 - axis.v0;
   point.distance = d;
+  point.distance_lower_bound = d.lower_bound;
   return point;
 }
 
@@ -104,10 +105,9 @@ std::optional<TargetContact::ProbePoint> TargetContact::FindProbePointWithin(
   SegmentDistanceBound& bound = distance_bounds_[pair];
   if (bound.ShowsFartherThan(ends.x0, ends.x1, reach)) return std::nullopt;
   ProbePoint point = FindProbePoint(target, frame, axis, ends);
-  // A capsule's minimum over a mesh is searched on a few intervals and may be a local one: its
-  // distance is no bound, and such pairs are always searched.
-  const bool global_minimum = ends.x0 == ends.x1 || target.kind != ContactTarget::Kind::kMesh;
-  if (global_minimum) bound = {ends.x0, ends.x1, point.distance.distance};
+  // Not the distance found, which for a capsule over a mesh may be a local minimum, but a bound
+  // of the global one.
+  bound = {ends.x0, ends.x1, point.distance_lower_bound};
   return point;
 }
 
@@ -176,6 +176,21 @@ TargetContact::PairForce TargetContact::CalcPairForce(const Frame& frame, const 
   return r;
 }
 
+bool TargetContact::MayCouple(const Frame& frame, const Axis& axis, double reach, double lead) {
+  // The test below without the distance query: the axis is at least the distance of the box its
+  // ends span from the target's ball, less the ball's radius, away; its points move at most as
+  // fast as its faster end, and the body's velocity at such a point, ẋ_WB + ω × (x − x_WB), is
+  // at most |ẋ_WB| + |ω| max_k |x_k − x_WB|.
+  const Vector3d& c = frame.bound_center;
+  const double outside =
+      (c - c.cwiseMax(axis.x0.cwiseMin(axis.x1)).cwiseMin(axis.x0.cwiseMax(axis.x1))).norm();
+  const double speed = std::max(axis.v0.norm(), axis.v1.norm()) + frame.velocity.v_WB.norm() +
+                       frame.velocity.w_B.norm() * std::max((axis.x0 - frame.pose.p_WB).norm(),
+                                                            (axis.x1 - frame.pose.p_WB).norm());
+  constexpr double kRounding = 1e-9;  // m
+  return !(outside - frame.bound_radius - kRounding > reach + lead * speed);
+}
+
 void TargetContact::FindBodyCouplings(const VectorXd& q, const VectorXd& v, double h,
                                       const SystemMatrix& matrix,
                                       std::vector<std::pair<Index, Index>>* owners) const {
@@ -186,8 +201,9 @@ void TargetContact::FindBodyCouplings(const VectorXd& q, const VectorXd& v, doub
     const Frame frame = CalcFrame(t, q, v);
     const Index body_owner = matrix.BodyOwner(frame.body);
     for (const ContactProbe& probe : probes_) {
-      const ProbePoint point =
-          FindProbePoint(targets[t], frame, LocateCapsuleAxis(model_, probe, q, &v));
+      const Axis axis = LocateCapsuleAxis(model_, probe, q, &v);
+      if (!MayCouple(frame, axis, 1.5 * probe.radius, 2.0 * h)) continue;
+      const ProbePoint point = FindProbePoint(targets[t], frame, axis);
       const Matrix3d& R = frame.pose.R_WB;
       const Vector3d body_velocity =
           frame.velocity.v_WB +

@@ -126,6 +126,7 @@ class TargetContact {
     Vector3d x, x_dot;
     Vector3d axis, axis_rate;  // x₁ − x₀ and its rate
     TargetDistance distance;
+    double distance_lower_bound = 0.0;  // SegmentTargetDistance::lower_bound (m)
   };
   ProbePoint FindProbePoint(const ContactTarget& target, const Frame& frame,
                             const Axis& axis) const;
@@ -143,6 +144,10 @@ class TargetContact {
   std::optional<ProbePoint> FindProbePointWithin(std::size_t pair, const ContactTarget& target,
                                                  const Frame& frame, const Axis& axis,
                                                  double reach) const;
+  // False where the target's bounding ball shows the axis farther from the target than
+  // reach + lead × (the largest speed of the axis relative to the target's surface): a
+  // conservative FindBodyCouplings test without the distance query.
+  static bool MayCouple(const Frame& frame, const Axis& axis, double reach, double lead);
   // Penetration, normal, ∂n/∂x and the probe's velocity relative to the target's surface.
   ContactKinematics CalcKinematics(const Frame& frame, const ContactProbe& probe,
                                    const ProbePoint& point) const;

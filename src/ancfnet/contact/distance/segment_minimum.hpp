@@ -21,6 +21,7 @@ struct SegmentMinimum {
   double t = 0.0;
   SegmentSample sample;  ///< at t
   int evaluations = 0;   ///< calls of `evaluate`
+  double lowest_sampled_value = 0.0;  ///< the lowest φ(t_j) of step 1 below
 };
 
 /// The lowest point of φ(t) on [0, 1]; `evaluate(t)` returns the SegmentSample at t.
@@ -47,6 +48,7 @@ SegmentMinimum FindSegmentMinimum(const Evaluate& evaluate, int intervals, doubl
     if (s.value < best.sample.value) lowest = j, best.sample = s;
   }
   best.t = static_cast<double>(lowest) / intervals;
+  best.lowest_sampled_value = best.sample.value;
   const SegmentSample at_lowest = best.sample;
   double lo, hi;
   if (at_lowest.slope < 0.0 && lowest < intervals) {

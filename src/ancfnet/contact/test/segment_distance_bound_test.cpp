@@ -50,12 +50,12 @@ WalkResult Walk(const ContactTarget& target, double length, double stride, doubl
                             .cwiseMin(0.6);
     const Vector3d y1 =
         y0 + length * Vector3d(uniform(random), uniform(random), uniform(random)).normalized();
-    const double distance = CalcSegmentTargetDistance(target, y0, y1).distance;
+    const SegmentTargetDistance found = CalcSegmentTargetDistance(target, y0, y1);
     if (bound.ShowsFartherThan(y0, y1, reach)) {
       ++result.apart;
-      if (!(distance > reach)) ++result.wrong;
+      if (!(found.distance > reach)) ++result.wrong;
     }
-    bound = {y0, y1, distance};
+    bound = {y0, y1, found.lower_bound};
     x0 = y0;
     x1 = y1;
   }
@@ -73,10 +73,13 @@ TEST(SegmentDistanceBound, NeverExceedsTheDistanceToABox) {
 }
 
 TEST(SegmentDistanceBound, NeverExceedsTheSignedDistanceToAClosedMesh) {
-  for (const double reach : {-0.05, 0.0, 0.01, 0.1}) {
-    const WalkResult r = Walk(FacetedSphere(), 0.0, 0.02, reach);
-    EXPECT_EQ(r.wrong, 0) << "reach " << reach;
-    EXPECT_GT(r.apart, 100) << "reach " << reach;
+  // Points, and capsule axes whose bound is the sampled one (SegmentTargetDistance::lower_bound).
+  for (const double length : {0.0, 0.05}) {
+    for (const double reach : {-0.05, 0.0, 0.01, 0.1}) {
+      const WalkResult r = Walk(FacetedSphere(), length, 0.02, reach);
+      EXPECT_EQ(r.wrong, 0) << "length " << length << ", reach " << reach;
+      EXPECT_GT(r.apart, 100) << "length " << length << ", reach " << reach;
+    }
   }
 }
 

@@ -1,13 +1,15 @@
 // The deepest point of a segment in each kind of target against closed forms: a sphere and a
 // capsule (the closest points of a segment to a point and to a segment), a tilted plane (the
 // lower end), a cylinder (the projection on the plane normal to its axis), a box edge (the
-// closest point to the edge line), and a faceted sphere against a dense scan of the segment.
+// closest point to the edge line), and a faceted sphere against a dense scan of the segment; the
+// lower bound of a segment's distance to a mesh where the search stops in a local minimum.
 
 #include "ancfnet/contact/target_distance.hpp"
 
 #include <gtest/gtest.h>
 
 #include <memory>
+#include <tuple>
 
 #include "ancfnet/contact/distance/point_segment.hpp"
 #include "ancfnet/contact/distance/segment_segment.hpp"
@@ -107,11 +109,43 @@ TEST(SegmentTargetDistance, MeshMatchesADenseScanOfTheSegment) {
   }
 }
 
+// Two small triangles under a 1 m segment: the farther (0.06 m) right under the sample t = 0.5,
+// the nearer (0.04 m) between the samples 0 and 0.25. The search stops at the farther one; the
+// lower bound stays below the global minimum of a dense scan, within |Δ|/8 of the lowest sample.
+TEST(SegmentTargetDistance, LowerBoundHoldsWhereTheMeshSearchStopsInALocalMinimum) {
+  TriangleMesh wells;
+  const double half = 5e-4;
+  wells.vertices.resize(3, 6);
+  for (const auto& [k, x, z] : {std::tuple{0, 0.125, -0.04}, std::tuple{1, 0.5, -0.06}}) {
+    wells.vertices.col(3 * k + 0) = Vector3d(x - half, -half, z);
+    wells.vertices.col(3 * k + 1) = Vector3d(x + half, -half, z);
+    wells.vertices.col(3 * k + 2) = Vector3d(x, half, z);
+  }
+  wells.triangles.resize(3, 2);
+  wells.triangles << 0, 3, 1, 4, 2, 5;
+  ContactTarget mesh;
+  mesh.kind = ContactTarget::Kind::kMesh;
+  mesh.mesh = std::make_shared<const MeshBvh>(std::move(wells));
+  const Vector3d a = Vector3d::Zero(), b = Vector3d::UnitX();
+  const SegmentTargetDistance d = CalcSegmentTargetDistance(mesh, a, b);
+  double lowest = 1e300;
+  for (int i = 0; i <= 20000; ++i)
+    lowest = std::min(lowest, mesh.mesh->CalcDistance(a + i / 20000.0 * (b - a)).distance);
+  EXPECT_NEAR(lowest, 0.04, 1e-9);
+  EXPECT_NEAR(d.distance, 0.06, 1e-9) << "the search should stop in the farther well";
+  EXPECT_LE(d.lower_bound, lowest);
+  EXPECT_NEAR(d.lower_bound, 0.06 - 1.0 / 8.0, 1e-12);
+  // A convex target's bound is its minimum.
+  const SegmentTargetDistance s = CalcSegmentTargetDistance(Sphere(), kA, kB);
+  EXPECT_EQ(s.lower_bound, s.distance);
+}
+
 TEST(SegmentTargetDistance, ZeroLengthSegmentIsThePointDistance) {
   const SegmentTargetDistance d = CalcSegmentTargetDistance(Sphere(), kA, kA);
   EXPECT_EQ(d.t, 0.0);
   EXPECT_EQ(d.evaluations, 1);
   EXPECT_EQ(d.distance, CalcPointTargetDistance(Sphere(), kA).distance);
+  EXPECT_EQ(d.lower_bound, d.distance);
 }
 
 }  // namespace

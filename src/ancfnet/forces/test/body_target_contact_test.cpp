@@ -1,6 +1,7 @@
 // Contact with a target carried by a free, moving, spinning rigid body: the generalised forces
 // on the cable and on the body, and their Jacobians with respect to every coordinate (the
-// body's x and ψ included) against central differences.
+// body's x and ψ included) against central differences; which probes the iteration matrix
+// couples with the body (FindBodyCouplings) as the body spins under a rope at rest.
 
 #include <gtest/gtest.h>
 
@@ -77,6 +78,42 @@ TEST(BodyTargetContact, JacobiansMatchFiniteDifferences) {
   // The LuGre law, its bristles turned with the body (z_W = R_WB z_B).
   ExpectJacobiansMatch(MakeCableOnATumblingBox(MakeLuGreFriction(0.4, 0.3, 1e-2, 1e4, 50.0, 0.1)),
                        1e-6, 1e-3, Vector3d(2e-5, -1e-5, 0.0));
+}
+
+// A rope at rest 0.15 m over the centre of a ball of radius 0.1 m spinning about z at ω: a probe
+// ρ from the axis is d = √(ρ² + 0.15²) − 0.1 from the ball and coupled with the body where
+// d < 1.5 r + 2 h ω ρ (r = 2 mm, h = 1 ms): none at ω = 100/s; at 400/s those with ρ ≳ 0.08 m;
+// more at 1000/s. The ball is its own bounding ball, so the cull before the distance query is
+// what decides here, and it must keep the probes the spinning surface reaches.
+int CountBodyCouplings(double spin) {
+  ModelBuilder builder;
+  builder.AddRigidBody({.name = "target",
+                        .mass = 5.0,
+                        .inertia = Vector3d(0.2, 0.3, 0.4).asDiagonal(),
+                        .angular_velocity = Vector3d(0.0, 0.0, spin)});
+  test::AddTestRope(Vector3d(-0.2, 0.0, 0.15), Vector3d(0.2, 0.0, 0.15), &builder);
+  ContactSpec spec = test::MakeTestContactSpec(std::nullopt);
+  ContactTarget ball;
+  ball.kind = ContactTarget::Kind::kSphere;
+  ball.radius = 0.1;
+  ball.body_name = "target";
+  spec.targets.push_back(ball);
+  builder.SetContact(spec);
+  const Model model = builder.Build();
+  const State state = MakeInitialState(model);
+  const DofMap all = DofMap::AllCoordinates(model);
+  const SystemMatrix matrix(model, all);
+  std::vector<std::pair<Index, Index>> couplings;
+  TargetContact(model).FindBodyCouplings(state.q, state.v, 1e-3, matrix, &couplings);
+  return static_cast<int>(couplings.size());
+}
+
+TEST(BodyTargetContact, CouplesTheProbesTheSpinningFaceCanReachWithinTheStep) {
+  EXPECT_EQ(CountBodyCouplings(0.0), 0);
+  EXPECT_EQ(CountBodyCouplings(100.0), 0);
+  const int outer = CountBodyCouplings(400.0);
+  EXPECT_GT(outer, 0);
+  EXPECT_LT(outer, CountBodyCouplings(1000.0));
 }
 
 }  // namespace
