@@ -8,6 +8,7 @@
 
 #include "ancfnet/contact/elastic_step_force.hpp"
 #include "ancfnet/forces/impact_speed.hpp"
+#include "ancfnet/model/cable_element_box.hpp"
 
 namespace ancfnet {
 namespace {
@@ -96,9 +97,9 @@ std::optional<TargetContact::ProbePoint> TargetContact::FindProbePointWithin(
   // The axis lies in the box its ends span and the target in its ball: the distance of the box
   // from the ball is a lower bound of theirs, without a square root and without moving the axis
   // into the target's frame (the test that runs for every probe and target at every residual).
-  const Vector3d& c = frame.bound_center;
   const double outside2 =
-      (c - c.cwiseMax(axis.x0.cwiseMin(axis.x1)).cwiseMin(axis.x0.cwiseMax(axis.x1))).squaredNorm();
+      Aabb{axis.x0.cwiseMin(axis.x1), axis.x0.cwiseMax(axis.x1)}.SquaredDistanceTo(
+          frame.bound_center);
   const double limit = frame.bound_radius + reach;
   if (limit < 0.0 || outside2 > limit * limit) return std::nullopt;
   const TargetAxis ends = InTargetFrame(frame, axis);
@@ -181,9 +182,9 @@ bool TargetContact::MayCouple(const Frame& frame, const Axis& axis, double reach
   // ends span from the target's ball, less the ball's radius, away; its points move at most as
   // fast as its faster end, and the body's velocity at such a point, ẋ_WB + ω × (x − x_WB), is
   // at most |ẋ_WB| + |ω| max_k |x_k − x_WB|.
-  const Vector3d& c = frame.bound_center;
   const double outside =
-      (c - c.cwiseMax(axis.x0.cwiseMin(axis.x1)).cwiseMin(axis.x0.cwiseMax(axis.x1))).norm();
+      std::sqrt(Aabb{axis.x0.cwiseMin(axis.x1), axis.x0.cwiseMax(axis.x1)}.SquaredDistanceTo(
+          frame.bound_center));
   const double speed = std::max(axis.v0.norm(), axis.v1.norm()) + frame.velocity.v_WB.norm() +
                        frame.velocity.w_B.norm() * std::max((axis.x0 - frame.pose.p_WB).norm(),
                                                             (axis.x1 - frame.pose.p_WB).norm());
@@ -332,38 +333,67 @@ double TargetContact::ElasticSlope(double penetration) const {
   return model_.contact().normal.Evaluate(penetration, 0.0, 1.0).dforce_ddelta;
 }
 
+template <class Visit>
+void TargetContact::ForEachStepPair(const VectorXd& q, const VectorXd& v,
+                                    const std::vector<ContactPairHistory>& history,
+                                    bool with_jacobian, double* energy, Visit&& visit) const {
+  BeginStepEvaluation(q, v);
+  const std::size_t num_targets = model_.contact().targets.size();
+  // The probes of an element come one after another (MakeContactProbes): its boxes at q and at
+  // the step's end hold all their axes. A pair whose probe's box is farther from the target's
+  // ball than its radius at both, and that did not touch at the start, has no force
+  // (CalcStepPairForce would find it beyond reach at the end and at q): it is skipped, and so
+  // is a probe without such a pair, before its axes are located.
+  Index boxed = -1;
+  Aabb box, end_box;
+  const auto may_touch = [&](std::size_t p, std::size_t t) {
+    const ContactProbe& probe = probes_[p];
+    if (probe.element < 0 || start_penetration_[p * num_targets + t] > 0.0) return true;
+    constexpr double kRounding = 1e-9;  // m
+    const double reach = probe.radius + kRounding;
+    const auto within = [reach](const Aabb& b, const Frame& frame) {
+      const double limit = frame.bound_radius + reach;
+      return b.SquaredDistanceTo(frame.bound_center) <= limit * limit;
+    };
+    return within(box, frames_[t]) || within(end_box, end_frames_[t]);
+  };
+  for (std::size_t p = 0; p < probes_.size(); ++p) {
+    const ContactProbe& probe = probes_[p];
+    if (probe.element >= 0 && probe.element != boxed) {
+      boxed = probe.element;
+      box = CalcCableElementBox(model_, boxed, q);
+      end_box = CalcCableElementBox(model_, boxed, *step_end_);
+    }
+    std::size_t first = 0;
+    while (first < num_targets && !may_touch(p, first)) ++first;
+    if (first == num_targets) continue;
+    const Axis axis = LocateCapsuleAxis(model_, probe, q, &v);
+    const Axis end_axis = LocateCapsuleAxis(model_, probe, *step_end_);
+    for (std::size_t t = first; t < num_targets; ++t) {
+      if (t > first && !may_touch(p, t)) continue;
+      const std::optional<PairForce> f = CalcStepPairForce(
+          p, t, axis, end_axis, history[p * num_targets + t], with_jacobian, energy);
+      if (f) visit(probe, *f);
+    }
+  }
+}
+
 void TargetContact::AddStepForces(const VectorXd& q, const VectorXd& v,
                                   const std::vector<ContactPairHistory>& history,
                                   Workspace& ws) const {
-  BeginStepEvaluation(q, v);
-  const std::size_t num_targets = model_.contact().targets.size();
   ws.contact_energy = 0.0;
-  for (std::size_t p = 0; p < probes_.size(); ++p) {
-    const Axis axis = LocateCapsuleAxis(model_, probes_[p], q, &v);
-    const Axis end_axis = LocateCapsuleAxis(model_, probes_[p], *step_end_);
-    for (std::size_t t = 0; t < num_targets; ++t) {
-      const std::optional<PairForce> f = CalcStepPairForce(
-          p, t, axis, end_axis, history[p * num_targets + t], false, &ws.contact_energy);
-      if (f) ApplyPairForce(probes_[p], *f, ws);
-    }
-  }
+  ForEachStepPair(
+      q, v, history, false, &ws.contact_energy,
+      [&](const ContactProbe& probe, const PairForce& f) { ApplyPairForce(probe, f, ws); });
 }
 
 void TargetContact::AddStepJacobian(const VectorXd& q, const VectorXd& v,
                                     const std::vector<ContactPairHistory>& history,
                                     const IterationWeights& weights, SystemMatrix* matrix) const {
-  BeginStepEvaluation(q, v);
-  const std::size_t num_targets = model_.contact().targets.size();
   double energy = 0.0;
-  for (std::size_t p = 0; p < probes_.size(); ++p) {
-    const Axis axis = LocateCapsuleAxis(model_, probes_[p], q, &v);
-    const Axis end_axis = LocateCapsuleAxis(model_, probes_[p], *step_end_);
-    for (std::size_t t = 0; t < num_targets; ++t) {
-      const std::optional<PairForce> f = CalcStepPairForce(
-          p, t, axis, end_axis, history[p * num_targets + t], true, &energy);
-      if (f) AddPairJacobian(probes_[p], *f, weights, matrix);
-    }
-  }
+  ForEachStepPair(q, v, history, true, &energy, [&](const ContactProbe& probe, const PairForce& f) {
+    AddPairJacobian(probe, f, weights, matrix);
+  });
 }
 
 Vector3d TargetContact::CalcStepDisplacement(const ContactProbe& probe, const PairForce& f) const {

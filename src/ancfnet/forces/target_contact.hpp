@@ -178,6 +178,12 @@ class TargetContact {
                                              const Axis& end_axis,
                                              const ContactPairHistory& history,
                                              bool with_jacobian, double* energy) const;
+  // Calls visit(probe, force) for every pair with a force in the midpoint rule's step
+  // (CalcStepPairForce) at (q, v), skipping the elements whose boxes show them out of reach.
+  template <class Visit>
+  void ForEachStepPair(const VectorXd& q, const VectorXd& v,
+                       const std::vector<ContactPairHistory>& history, bool with_jacobian,
+                       double* energy, Visit&& visit) const;
   // ∂F/∂δ of the normal law's elastic part at penetration δ (N/m).
   double ElasticSlope(double penetration) const;
   // The displacement over the step of a pair's contact point relative to its target, as the

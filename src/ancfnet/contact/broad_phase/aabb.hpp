@@ -14,6 +14,10 @@ struct Aabb {
     const double grow = r + margin;
     return {a.cwiseMin(b).array() - grow, a.cwiseMax(b).array() + grow};
   }
+  /// The squared distance of the point p from the box (0 inside).
+  double SquaredDistanceTo(const Vector3d& p) const {
+    return (p - p.cwiseMax(min).cwiseMin(max)).squaredNorm();
+  }
   bool Overlaps(const Aabb& o) const {
     return (min.array() <= o.max.array()).all() && (o.min.array() <= max.array()).all();
   }
