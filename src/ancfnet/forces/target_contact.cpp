@@ -27,6 +27,36 @@ Vector4d CalcWeights(const ContactProbe& probe, double t) {
 
 }  // namespace
 
+// The centre-line box of the element a run of probes lies on (MakeContactProbes puts the probes
+// of an element one after another), found once per element as a loop goes through them.
+class TargetContact::ElementBoxes {
+ public:
+  ElementBoxes(const Model& model, const VectorXd& q) : model_(model), q_(q) {}
+  const Aabb& Of(Index element) {
+    if (element != element_) {
+      element_ = element;
+      box_ = CalcCableElementBox(model_, element, q_);
+    }
+    return box_;
+  }
+
+ private:
+  const Model& model_;
+  const VectorXd& q_;
+  Index element_ = -1;
+  Aabb box_;
+};
+
+bool TargetContact::MayReach(const ContactProbe& probe, ElementBoxes& boxes, const Frame& frame) {
+  if (probe.element < 0) return true;
+  // The box holds every probe axis of the element: farther from the target's ball than the
+  // probe's radius, none of them reaches the target (FindProbePointWithin's first test, for the
+  // whole element and before its axes are located).
+  constexpr double kRounding = 1e-9;  // m
+  const double limit = frame.bound_radius + probe.radius + kRounding;
+  return boxes.Of(probe.element).SquaredDistanceTo(frame.bound_center) <= limit * limit;
+}
+
 TargetContact::TargetContact(const Model& model)
     : model_(model),
       probes_(MakeContactProbes(model)),
@@ -245,9 +275,13 @@ void TargetContact::SetStep(const VectorXd& q_start, const VectorXd& v_start,
   const auto& targets = model_.contact().targets;
   start_penetration_.assign(probes_.size() * targets.size(), -kFar);
   for (std::size_t t = 0; t < targets.size(); ++t) frames_[t] = CalcFrame(t, q_start, v_start);
+  ElementBoxes boxes(model_, q_start);
   for (std::size_t p = 0; p < probes_.size(); ++p) {
+    std::size_t first = 0;
+    while (first < targets.size() && !MayReach(probes_[p], boxes, frames_[first])) ++first;
+    if (first == targets.size()) continue;
     const Axis axis = LocateCapsuleAxis(model_, probes_[p], q_start);
-    for (std::size_t t = 0; t < targets.size(); ++t) {
+    for (std::size_t t = first; t < targets.size(); ++t) {
       const std::size_t pair = p * targets.size() + t;
       const std::optional<ProbePoint> point =
           FindProbePointWithin(pair, targets[t], frames_[t], axis, probes_[p].radius);
@@ -344,26 +378,14 @@ void TargetContact::ForEachStepPair(const VectorXd& q, const VectorXd& v,
   // ball than its radius at both, and that did not touch at the start, has no force
   // (CalcStepPairForce would find it beyond reach at the end and at q): it is skipped, and so
   // is a probe without such a pair, before its axes are located.
-  Index boxed = -1;
-  Aabb box, end_box;
+  ElementBoxes boxes(model_, q), end_boxes(model_, *step_end_);
   const auto may_touch = [&](std::size_t p, std::size_t t) {
-    const ContactProbe& probe = probes_[p];
-    if (probe.element < 0 || start_penetration_[p * num_targets + t] > 0.0) return true;
-    constexpr double kRounding = 1e-9;  // m
-    const double reach = probe.radius + kRounding;
-    const auto within = [reach](const Aabb& b, const Frame& frame) {
-      const double limit = frame.bound_radius + reach;
-      return b.SquaredDistanceTo(frame.bound_center) <= limit * limit;
-    };
-    return within(box, frames_[t]) || within(end_box, end_frames_[t]);
+    return start_penetration_[p * num_targets + t] > 0.0 ||
+           MayReach(probes_[p], boxes, frames_[t]) ||
+           MayReach(probes_[p], end_boxes, end_frames_[t]);
   };
   for (std::size_t p = 0; p < probes_.size(); ++p) {
     const ContactProbe& probe = probes_[p];
-    if (probe.element >= 0 && probe.element != boxed) {
-      boxed = probe.element;
-      box = CalcCableElementBox(model_, boxed, q);
-      end_box = CalcCableElementBox(model_, boxed, *step_end_);
-    }
     std::size_t first = 0;
     while (first < num_targets && !may_touch(p, first)) ++first;
     if (first == num_targets) continue;
@@ -517,8 +539,10 @@ std::string TargetContact::CheckStep(const VectorXd& q_start, const VectorXd& v_
   for (std::size_t t = 0; t < targets.size(); ++t) {
     const Frame start = CalcFrame(t, q_start, v_start);
     const Frame end = CalcFrame(t, q, v);
+    ElementBoxes boxes(model_, q);
     for (std::size_t p = 0; p < probes_.size(); ++p) {
       const ContactProbe& probe = probes_[p];
+      if (!MayReach(probe, boxes, end)) continue;
       const std::optional<ProbePoint> point =
           FindProbePointWithin(p * targets.size() + t, targets[t], end,
                                LocateCapsuleAxis(model_, probe, q), probe.radius);

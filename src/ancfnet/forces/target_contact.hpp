@@ -144,6 +144,11 @@ class TargetContact {
   std::optional<ProbePoint> FindProbePointWithin(std::size_t pair, const ContactTarget& target,
                                                  const Frame& frame, const Axis& axis,
                                                  double reach) const;
+  // Centre-line boxes of the elements, found once per element in a loop over the probes.
+  class ElementBoxes;
+  // False where the box of the probe's element (at the positions `boxes` is for) is farther from
+  // the target's ball in `frame` than the probe's radius: no probe of that element can touch.
+  static bool MayReach(const ContactProbe& probe, ElementBoxes& boxes, const Frame& frame);
   // False where the target's bounding ball shows the axis farther from the target than
   // reach + lead × (the largest speed of the axis relative to the target's surface): a
   // conservative FindBodyCouplings test without the distance query.
