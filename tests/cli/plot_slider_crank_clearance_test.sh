@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
-# End-to-end check of examples/slider_crank_clearance.yaml and its plots: the example runs, its
-# journal orbit stays within the clearance circle up to a penetration below c/4 with free flight
-# and impacts, and tools/plot_slider_crank_clearance.py writes the slider acceleration against
-# the ideal curve and the orbit; the script exits with 2 for a missing file or a probe CSV
-# without the slider's and the joint's probes.
+# End-to-end check of examples/slider_crank_clearance.yaml and its plots: the example runs (its
+# orbit, impacts and energy are checked by SliderCrankClearance.TheExampleLosesEnergyOnlyWhile-
+# TheJournalTouches), and tools/plot_slider_crank_clearance.py writes the slider acceleration
+# against the ideal curve and the orbit; the script exits with 2 for a missing file or a probe
+# CSV without the slider's and the joint's probes.
 # Usage: bash tests/cli/plot_slider_crank_clearance_test.sh <ancfnet binary> <repo root>
 set -euo pipefail
 
@@ -21,15 +21,6 @@ fail() {
 (cd "$root/examples" && "$ancfnet" run slider_crank_clearance.yaml -o "$work/out" -q) ||
   fail "ancfnet run exited with $?"
 grep -q '"status": "completed"' "$work/out/summary.json" || fail "run did not complete"
-/usr/bin/python3 - "$work/out/probes.csv" <<'PY' || fail "journal orbit out of range"
-import csv, math, sys
-rows = list(csv.DictReader(open(sys.argv[1])))
-c = 0.5e-3
-modes = {int(float(r["pin.mode"])) for r in rows}
-assert {0, 2} <= modes, modes                       # free flight and impacts
-worst = max(math.hypot(float(r["pin.ex"]), float(r["pin.ey"])) for r in rows)
-assert worst < 1.25 * c, worst                      # inside the circle up to δ < c/4
-PY
 
 args=(--crank 0.05 --rod 0.12 --rate 523.5987755982989 --clearance 0.5e-3)
 /usr/bin/python3 "$script" "$work/out/probes.csv" "${args[@]}" -o "$work/plots" >"$work/stdout" ||

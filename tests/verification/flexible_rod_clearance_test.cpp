@@ -119,12 +119,7 @@ RodRun RunFlexibleSliderCrank(double clearance, double stiffness) {
   const Index start = model.NodePositionDof(rod.first_node);
   const Index middle = model.NodePositionDof(rod.first_node + kElements / 2);
   const Index end = model.NodePositionDof(rod.first_node + kElements);
-  DynamicSettings settings;
-  settings.time_step = kPeriod / 2400.0;
-  settings.end_time = 2.0 * kPeriod;
-  settings.spectral_radius = 0.9;
-  settings.newton.relative_tolerance = 1e-10;
-  settings.newton.absolute_tolerance = 1e-12;
+  const DynamicSettings settings = MakeSliderCrankSettings(2.0, 0.9);
   State state = MakeInitialState(model);
   SetRodVelocity(model, &state);
   std::vector<double> times, bending;
