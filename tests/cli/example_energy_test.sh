@@ -14,7 +14,7 @@ work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 
 for example in pendulum cantilever_dynamic cantilever_decay journal_bearing lugre_incline \
-  spin_up tethered_target net_deploy slider_crank net_drop_sphere; do
+  spin_up tethered_target net_deploy slider_crank slider_crank_clearance net_drop_sphere; do
   (cd "$root/examples" && "$ancfnet" run "$example.yaml" -o "$work/$example" -q) ||
     { echo "FAIL: $example: exit code $?" >&2; exit 1; }
   python3 - "$work/$example/probes.csv" "$example" <<'PY'

@@ -6,7 +6,11 @@
 //   load, δ = (m g/k)^(1/n), with kinetic + strain + gravity + dissipated − work constant;
 // - a bearing (a point mass) hanging on a journal spinning with Coulomb friction stays at the
 //   friction angle φ = atan μ, where the friction moment on the journal is μ N R_J with
-//   N = m g/√(1 + μ²) (the friction circle of a journal bearing; Flores & Ambrósio 2004).
+//   N = m g/√(1 + μ²) (the friction circle of a journal bearing; Flores & Ambrósio 2004);
+// - a ball flying across a spherical clearance socket rebounds from the socket's wall with the
+//   restitution e* its dissipative law achieves in a free impact, the root of
+//   χ̂ (1 + e*) = ln[(1 + χ̂)/(1 − χ̂ e*)] (CalcRestitutionForHysteresisFactor, docs/theory.md),
+//   and the energy the law dissipates is the kinetic energy lost, ½ m v₀² (1 − e*²).
 
 #include <gtest/gtest.h>
 
@@ -49,6 +53,7 @@ struct JointRun {
   double max_balance_error = 0.0;  // max |balance − balance₀| (J)
   double energy0 = 0.0;            // kinetic + strain at t = 0 (J)
   int impacts = 0;                 // contacts started
+  double dissipated = 0.0;         // by the end (J)
   ClearanceJointState last;
   State state;
 };
@@ -69,6 +74,7 @@ JointRun Simulate(const Model& model, IntegratorType integrator, double h, doubl
       [&](const State& s, const EnergyAccount& e) {
         if (first) balance0 = e.Balance(), run.energy0 = e.kinetic + e.strain, first = false;
         run.max_balance_error = std::max(run.max_balance_error, std::abs(e.Balance() - balance0));
+        run.dissipated = e.dissipated;
         run.last = CalcClearanceJointState(model, 0, s.q, s.v, s.body_rotation, s.joint_history[0]);
         const bool now = run.last.contact.touching;
         if (now && !touching) ++run.impacts;
@@ -160,6 +166,44 @@ TEST(ClearanceJoint, FrictionMomentOfASpinningJournalIsMuNR) {
   // Friction on the journal opposes its spin: M_z = −μ N R_J.
   EXPECT_NEAR(c.journal_moment.z(), -moment, 1e-2 * moment);
   EXPECT_NEAR(std::abs(angle), std::atan(mu), 1e-2 * std::atan(mu));
+}
+
+TEST(ClearanceJoint, BallInASphericalSocketReboundsWithItsLawsRestitution) {
+  // The ball (the journal, a free body) leaves the socket's centre along an oblique direction
+  // at 0.5 m/s, strikes the wall head-on after c/v₀ and flies back; the run ends 3 Hertz contact
+  // times after the strike, before the ball can reach the opposite wall (2c/(e* v₀) later).
+  const double speed = 0.5, k = 1e9;
+  const Vector3d v0 = speed * Vector3d(0.6, 0.48, 0.64);
+  const double delta_max = std::pow(5.0 * kMass * speed * speed / (4.0 * k), 0.4);
+  const double hertz_time = 2.943275 * delta_max / speed;  // Johnson 1985, §11.4
+  for (const auto& [kind, e] :
+       {std::pair(NormalLawKind::kLankaraniNikravesh, 0.5), std::pair(NormalLawKind::kFlores, 0.7),
+        std::pair(NormalLawKind::kHuntCrossley, 0.9)}) {
+    const NormalLaw law = MakeDissipativeContactLaw(kind, k, e);
+    ModelBuilder builder;
+    builder.AddRigidBody(Journal(v0, Vector3d(0, 0, 3.0)));
+    ClearanceJointSpec socket = GroundBearing(law, std::nullopt);
+    socket.type = ClearanceJoint::Type::kSpherical;
+    builder.AddClearanceJoint(socket);
+    const Model model = builder.Build();
+    const JointRun run = Simulate(model, IntegratorType::kImplicitMidpoint, hertz_time / 1000.0,
+                                  kClearance / speed + 3.0 * hertz_time);
+    const Index dof = model.rigid_bodies()[0].position_dof();
+    const Vector3d rebound = run.state.v.segment<3>(dof);
+    const double restitution = rebound.norm() / speed;
+    const double expected = CalcRestitutionForHysteresisFactor(law.hysteresis_factor());
+    const double loss = 0.5 * kMass * speed * speed * (1.0 - expected * expected);
+    std::printf(
+        "ball in socket, law %d, e = %.1f: rebound %.5f of v₀ (predicted e* = %.5f), "
+        "direction cos %.6f, dissipated %.6e J (½ m v₀² (1 − e*²) = %.6e J), %d impact\n",
+        static_cast<int>(kind), e, restitution, expected,
+        rebound.dot(v0) / (rebound.norm() * speed), run.dissipated, loss, run.impacts);
+    EXPECT_EQ(run.impacts, 1);
+    EXPECT_FALSE(run.last.contact.touching);
+    EXPECT_NEAR(restitution, expected, 5e-3 * expected);
+    EXPECT_LT(rebound.dot(v0) / (rebound.norm() * speed), -0.9999);  // straight back
+    EXPECT_NEAR(run.dissipated, loss, 1e-2 * loss);
+  }
 }
 
 }  // namespace

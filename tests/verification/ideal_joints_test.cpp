@@ -177,14 +177,7 @@ Model MakeSliderCrank(IdealJoint::Type guide) {
 void ExpectSliderAccelerationAsTheKinematics(IdealJoint::Type guide, const char* label) {
   const Model model = MakeSliderCrank(guide);
   const Index slider_x = model.rigid_bodies()[2].position_dof();
-  DynamicSettings settings;
-  settings.time_step = kPeriod / 2400.0;
-  settings.end_time = 2.5 * kPeriod;
-  settings.spectral_radius = 0.6;
-  // Newton's test is on positions, q = q̂ + β' a with β' ≈ 6e-12 s²: 1e-10 |q| resolves the
-  // accelerations to ~1 m/s² (examples/slider_crank.yaml).
-  settings.newton.relative_tolerance = 1e-10;
-  settings.newton.absolute_tolerance = 1e-12;
+  const DynamicSettings settings = MakeSliderCrankSettings(2.5, 0.6);
   State state = MakeInitialState(model);
   double at_0 = 0.0, at_pi = 0.0, best_0 = 1.0, best_pi = 1.0;
   EnergyAccount first_energy, last_energy;
