@@ -128,7 +128,11 @@ expect_scene_error bad_integrator "generalized_alfa" "integrator" "generalized_a
 : >"$work/empty.yaml"
 expect_scene_error empty "" "" "empty"
 
-head -c 4096 /dev/urandom >"$work/binary.yaml"
+# 4 KiB of seeded pseudo-random bytes: the same file every run (with /dev/urandom the test
+# failed about once in 300 runs, when yaml-cpp quoted a line break it could not read: such
+# characters are now written as \xNN, scene_loader_test.cpp, UnknownEscapeOf*).
+awk 'BEGIN { srand(7); for (i = 0; i < 4096; ++i) printf "%c", int(256 * rand()) }' \
+  >"$work/binary.yaml"
 expect_input_error check "$work/binary.yaml"
 [[ $message == *binary.yaml* ]] || fail "binary: the message does not name the file: $message"
 

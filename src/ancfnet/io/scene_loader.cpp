@@ -444,11 +444,26 @@ Scene ReadScene(const YamlValue& root, const std::filesystem::path& scene_direct
   return result;
 }
 
+// yaml-cpp's message with every byte outside printable ASCII written as \xNN: it quotes the
+// offending character ("unknown escape character: X"), which in a binary file may be a line
+// break or a control character, and the error must stay one readable line.
+std::string EscapeUnprintable(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    const auto byte = static_cast<unsigned char>(c);
+    if (byte >= 0x20 && byte < 0x7f)
+      out += c;
+    else
+      out += fmt::format("\\x{:02x}", byte);
+  }
+  return out;
+}
+
 [[noreturn]] void ThrowYamlError(const std::string& source, const YAML::Exception& error) {
-  if (error.mark.is_null())
-    throw InputError(fmt::format("{}: invalid YAML: {}", source, error.msg));
+  const std::string why = EscapeUnprintable(error.msg);
+  if (error.mark.is_null()) throw InputError(fmt::format("{}: invalid YAML: {}", source, why));
   throw InputError(fmt::format("{}:{}:{}: invalid YAML: {}", source, error.mark.line + 1,
-                               error.mark.column + 1, error.msg));
+                               error.mark.column + 1, why));
 }
 
 }  // namespace

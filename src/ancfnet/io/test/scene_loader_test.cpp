@@ -295,6 +295,12 @@ const BadScene kBadScenes[] = {
      "scene.yaml:2:10: invalid YAML: end of sequence flow not found"},
     {"BadIndentation", "gravity: [0, 0, 0]\n  materials: 1\n",
      "scene.yaml:2:3: invalid YAML: end of map not found"},
+    // yaml-cpp quotes the character it cannot read: a control character or line break of a
+    // binary file is written as \xNN, so the message stays one line.
+    {"UnknownEscapeOfACarriageReturn", "a: \"x\\\ry\"\n",
+     "scene.yaml:1:8: invalid YAML: unknown escape character: \\x0d"},
+    {"UnknownEscapeOfAControlCharacter", "a: \"x\\\001y\"\n",
+     "scene.yaml:1:8: invalid YAML: unknown escape character: \\x01"},
     {"EmptyScene", "# nothing\n",
      "scene.yaml:1:1: the scene is empty (expected a map with materials, sections and cables)"},
     {"SceneNotAMap", "- 1\n", "scene.yaml:1:1: expected a map, got a list of 1 item"},
