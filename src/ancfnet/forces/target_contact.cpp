@@ -128,8 +128,7 @@ std::optional<TargetContact::ProbePoint> TargetContact::FindProbePointWithin(
   // from the ball is a lower bound of theirs, without a square root and without moving the axis
   // into the target's frame (the test that runs for every probe and target at every residual).
   const double outside2 =
-      Aabb{axis.x0.cwiseMin(axis.x1), axis.x0.cwiseMax(axis.x1)}.SquaredDistanceTo(
-          frame.bound_center);
+      Aabb::OfCapsule(axis.x0, axis.x1, 0.0, 0.0).SquaredDistanceTo(frame.bound_center);
   const double limit = frame.bound_radius + reach;
   if (limit < 0.0 || outside2 > limit * limit) return std::nullopt;
   const TargetAxis ends = InTargetFrame(frame, axis);
@@ -213,8 +212,7 @@ bool TargetContact::MayCouple(const Frame& frame, const Axis& axis, double reach
   // fast as its faster end, and the body's velocity at such a point, ẋ_WB + ω × (x − x_WB), is
   // at most |ẋ_WB| + |ω| max_k |x_k − x_WB|.
   const double outside =
-      std::sqrt(Aabb{axis.x0.cwiseMin(axis.x1), axis.x0.cwiseMax(axis.x1)}.SquaredDistanceTo(
-          frame.bound_center));
+      std::sqrt(Aabb::OfCapsule(axis.x0, axis.x1, 0.0, 0.0).SquaredDistanceTo(frame.bound_center));
   const double speed = std::max(axis.v0.norm(), axis.v1.norm()) + frame.velocity.v_WB.norm() +
                        frame.velocity.w_B.norm() * std::max((axis.x0 - frame.pose.p_WB).norm(),
                                                             (axis.x1 - frame.pose.p_WB).norm());
@@ -277,14 +275,13 @@ void TargetContact::SetStep(const VectorXd& q_start, const VectorXd& v_start,
   for (std::size_t t = 0; t < targets.size(); ++t) frames_[t] = CalcFrame(t, q_start, v_start);
   ElementBoxes boxes(model_, q_start);
   for (std::size_t p = 0; p < probes_.size(); ++p) {
-    std::size_t first = 0;
-    while (first < targets.size() && !MayReach(probes_[p], boxes, frames_[first])) ++first;
-    if (first == targets.size()) continue;
-    const Axis axis = LocateCapsuleAxis(model_, probes_[p], q_start);
-    for (std::size_t t = first; t < targets.size(); ++t) {
+    std::optional<Axis> axis;  // located for the first target the element may reach
+    for (std::size_t t = 0; t < targets.size(); ++t) {
+      if (!MayReach(probes_[p], boxes, frames_[t])) continue;
+      if (!axis) axis = LocateCapsuleAxis(model_, probes_[p], q_start);
       const std::size_t pair = p * targets.size() + t;
       const std::optional<ProbePoint> point =
-          FindProbePointWithin(pair, targets[t], frames_[t], axis, probes_[p].radius);
+          FindProbePointWithin(pair, targets[t], frames_[t], *axis, probes_[p].radius);
       if (point) start_penetration_[pair] = probes_[p].radius - point->distance.distance;
     }
   }
@@ -386,15 +383,15 @@ void TargetContact::ForEachStepPair(const VectorXd& q, const VectorXd& v,
   };
   for (std::size_t p = 0; p < probes_.size(); ++p) {
     const ContactProbe& probe = probes_[p];
-    std::size_t first = 0;
-    while (first < num_targets && !may_touch(p, first)) ++first;
-    if (first == num_targets) continue;
-    const Axis axis = LocateCapsuleAxis(model_, probe, q, &v);
-    const Axis end_axis = LocateCapsuleAxis(model_, probe, *step_end_);
-    for (std::size_t t = first; t < num_targets; ++t) {
-      if (t > first && !may_touch(p, t)) continue;
+    std::optional<Axis> axis, end_axis;  // located for the first target the probe may touch
+    for (std::size_t t = 0; t < num_targets; ++t) {
+      if (!may_touch(p, t)) continue;
+      if (!axis) {
+        axis = LocateCapsuleAxis(model_, probe, q, &v);
+        end_axis = LocateCapsuleAxis(model_, probe, *step_end_);
+      }
       const std::optional<PairForce> f = CalcStepPairForce(
-          p, t, axis, end_axis, history[p * num_targets + t], with_jacobian, energy);
+          p, t, *axis, *end_axis, history[p * num_targets + t], with_jacobian, energy);
       if (f) visit(probe, *f);
     }
   }
