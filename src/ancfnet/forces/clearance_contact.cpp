@@ -25,6 +25,12 @@ Matrix3d Projection(const ClearanceJoint& joint) {
   return Matrix3d::Identity() - joint.axis * joint.axis.transpose();
 }
 
+// The rotation from the frame the joint's bristle is stored in to the world: a body bearing's
+// R_B, else I (ClearanceContact).
+Matrix3d BristleFrame(const AnchorMotion& bearing) {
+  return bearing.kind == JointAnchor::Kind::kBody ? bearing.rotation : Matrix3d::Identity();
+}
+
 }  // namespace
 
 Vector3d CalcEccentricity(const ClearanceJoint& joint, const Vector3d& journal_center,
@@ -34,7 +40,7 @@ Vector3d CalcEccentricity(const ClearanceJoint& joint, const Vector3d& journal_c
 
 ClearanceContact CalcClearanceContact(const ClearanceJoint& joint, const AnchorMotion& journal,
                                       const AnchorMotion& bearing, double approach_speed,
-                                      bool with_jacobian) {
+                                      const Vector3d& bristle, double step, bool with_jacobian) {
   ClearanceContact r;
   const Matrix3d plane = Projection(joint);
   const Vector3d x = journal.center - bearing.center;
@@ -52,10 +58,13 @@ ClearanceContact CalcClearanceContact(const ClearanceJoint& joint, const AnchorM
   const Vector3d& w_b = bearing.angular_velocity;
   const Vector3d u =
       plane * (journal.velocity - bearing.velocity + radius * w_j.cross(n) - w_b.cross(r_B));
+  // The bristle in world axes, z_W = R z (ClearanceContact), stepped over h by the pair's law.
+  const Matrix3d frame = BristleFrame(bearing);
+  const Vector3d bristle_w = frame * bristle;
   const ContactPairForce pair = CalcContactPairForce(
       joint.normal, joint.friction,
       {.penetration = r.penetration, .normal = -n, .normal_derivative = -dn, .velocity = u},
-      approach_speed, Vector3d::Zero(), 0.0, with_jacobian);
+      approach_speed, bristle_w, step, with_jacobian);
   r.touching = true;
   r.normal = n;
   r.rate = pair.rate;
@@ -67,6 +76,7 @@ ClearanceContact CalcClearanceContact(const ClearanceJoint& joint, const AnchorM
   r.dissipative_force = pair.dissipative;
   r.dissipative_journal_moment = radius * n.cross(pair.dissipative);
   r.dissipative_bearing_moment = -r_B.cross(pair.dissipative);
+  r.bristle = frame.transpose() * pair.bristle;
   if (!with_jacobian) return r;
   const Matrix3d& f_u = pair.dforce_dv;
   const Matrix3d dr = Matrix3d::Identity() + radius * dn;  // ∂r_B/∂x
@@ -77,6 +87,10 @@ ClearanceContact CalcClearanceContact(const ClearanceJoint& joint, const AnchorM
   r.d_velocity = StackMoments(f_u * plane, zero, zero, n, f, radius, r_B);
   r.d_journal_omega = StackMoments(-radius * f_u * plane * Skew(n), zero, zero, n, f, radius, r_B);
   r.d_bearing_omega = StackMoments(f_u * plane * Skew(r_B), zero, zero, n, f, radius, r_B);
+  // A body bearing's bristle turns with it: δz_W = θ_B × z_W = −z̃_W θ_B.
+  if (bearing.kind == JointAnchor::Kind::kBody)
+    r.d_bearing_rotation =
+        StackMoments(-pair.dforce_dbristle * Skew(bristle_w), zero, zero, n, f, radius, r_B);
   return r;
 }
 

@@ -24,6 +24,11 @@ using Matrix9x3d = Eigen::Matrix<double, 9, 3>;
 /// moment m_J = R_J n × f, at the bearing's −f and m_B = −r_B × f (the same force at the same
 /// point, so the moments balance; r_B × f has the friction moment (|e| + R_J) n × f_t and, for a
 /// revolute joint whose centres are offset along the axis, that offset's couple).
+///
+/// With the LuGre law the bristle deflection z lives in the bearing's frame: a body bearing's
+/// body frame, z_W = R_B z (it turns with the body, as target contact's bristle on a body
+/// target), world axes for a ground or cable-point bearing (a cable point has a slope, not a
+/// frame). CalcContactPairForce re-projects z_W on the current tangent plane and steps it over h.
 struct ClearanceContact {
   bool touching = false;
   Vector3d eccentricity = Vector3d::Zero();    ///< e (m)
@@ -39,11 +44,18 @@ struct ClearanceContact {
   Vector3d dissipative_force = Vector3d::Zero();
   Vector3d dissipative_journal_moment = Vector3d::Zero();
   Vector3d dissipative_bearing_moment = Vector3d::Zero();
+  /// LuGre law: the bristle deflection z₁ (m) at the end of the step, in the bearing's frame (what
+  /// UpdateClearanceJointHistory stores); else zero.
+  Vector3d bristle = Vector3d::Zero();
   /// ∂(f, m_J, m_B)/∂c_J (= −∂/∂c_B), ∂/∂ċ_J (= −∂/∂ċ_B), ∂/∂ω_J and ∂/∂ω_B (with_jacobian).
   Matrix9x3d d_center = Matrix9x3d::Zero();
   Matrix9x3d d_velocity = Matrix9x3d::Zero();
   Matrix9x3d d_journal_omega = Matrix9x3d::Zero();
   Matrix9x3d d_bearing_omega = Matrix9x3d::Zero();
+  /// ∂(f, m_J, m_B)/∂θ_B through the bristle of a body bearing, which turns with the body:
+  /// δz_W = θ_B × z_W for a small rotation θ_B (world axes, δR_B = θ̃_B R_B); zero for other
+  /// bearings and laws (with_jacobian).
+  Matrix9x3d d_bearing_rotation = Matrix9x3d::Zero();
 };
 
 /// The eccentricity e = P (c_J − c_B) of the journal's centre c_J relative to the bearing's c_B.
@@ -51,9 +63,12 @@ Vector3d CalcEccentricity(const ClearanceJoint& joint, const Vector3d& journal_c
                           const Vector3d& bearing_center);
 
 /// The contact of `joint` with journal and bearing moving as given; `approach_speed` is the v₀
-/// of its normal law (ContactPairHistory::speed). Not touching (δ ≤ 0): no force.
+/// of its normal law (ContactPairHistory::speed), `bristle` the LuGre deflection z₀ at the start
+/// of the step in the bearing's frame (ContactPairHistory::bristle) and `step` the step size h it
+/// is advanced over (0: the force at the state, for outputs). Not touching (δ ≤ 0): no force and
+/// z₁ = 0.
 ClearanceContact CalcClearanceContact(const ClearanceJoint& joint, const AnchorMotion& journal,
                                       const AnchorMotion& bearing, double approach_speed,
-                                      bool with_jacobian);
+                                      const Vector3d& bristle, double step, bool with_jacobian);
 
 }  // namespace ancfnet

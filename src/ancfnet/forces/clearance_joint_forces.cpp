@@ -40,13 +40,14 @@ SideDerivative Select(const Matrix9x3d& d, bool bearing) {
 ClearanceJointState CalcClearanceJointState(const Model& model, Index j, const VectorXd& q,
                                             const VectorXd& v,
                                             const std::vector<Matrix3d>& rotation,
-                                            const ContactPairHistory& history, bool with_jacobian) {
+                                            const ContactPairHistory& history, bool with_jacobian,
+                                            double step) {
   const ClearanceJoint& joint = model.clearance_joints()[j];
   ClearanceJointState s;
   s.journal = CalcAnchorMotion(model, joint.journal, q, v, rotation);
   s.bearing = CalcAnchorMotion(model, joint.bearing, q, v, rotation);
-  s.contact =
-      CalcClearanceContact(joint, s.journal, s.bearing, std::abs(history.speed), with_jacobian);
+  s.contact = CalcClearanceContact(joint, s.journal, s.bearing, std::abs(history.speed),
+                                   history.bristle, step, with_jacobian);
   if (s.contact.touching) {
     const double v0 = std::max(history.speed, joint.normal.min_approach_speed);
     s.mode = std::abs(s.contact.rate) > 0.1 * v0 ? ClearanceMode::kImpact : ClearanceMode::kContact;
@@ -58,8 +59,9 @@ void AddClearanceJointForces(const Model& model, const VectorXd& q, const Vector
                              Workspace& ws) {
   const auto& joints = model.clearance_joints();
   for (std::size_t j = 0; j < joints.size(); ++j) {
-    const ClearanceJointState s = CalcClearanceJointState(model, static_cast<Index>(j), q, v,
-                                                          ws.body_rotation, ws.joint_history[j]);
+    const ClearanceJointState s =
+        CalcClearanceJointState(model, static_cast<Index>(j), q, v, ws.body_rotation,
+                                ws.joint_history[j], /*with_jacobian=*/false, ws.joint_step);
     const ClearanceContact& c = s.contact;
     if (!c.touching) continue;
     for (int g = 0; g < NumBlocks(s); ++g) {
@@ -92,7 +94,7 @@ void AddClearanceJointJacobians(const Model& model, const VectorXd& q, const Vec
   for (std::size_t j = 0; j < joints.size(); ++j) {
     const ClearanceJointState s =
         CalcClearanceJointState(model, static_cast<Index>(j), q, v, ws.body_rotation,
-                                ws.joint_history[j], /*with_jacobian=*/true);
+                                ws.joint_history[j], /*with_jacobian=*/true, ws.joint_step);
     const ClearanceContact& c = s.contact;
     if (!c.touching) continue;
     const int blocks = NumBlocks(s);
@@ -101,8 +103,10 @@ void AddClearanceJointJacobians(const Model& model, const VectorXd& q, const Vec
       const auto [col, l, col_bearing] = BlockOf(s, h);
       const double sign = col_bearing ? -1.0 : 1.0;
       const Matrix9x3d& d_omega = col_bearing ? c.d_bearing_omega : c.d_journal_omega;
-      const Matrix9x3d d_q =
+      Matrix9x3d d_q =
           sign * (c.d_center * col->a[l] + c.d_velocity * col->c[l]) + d_omega * col->d[l];
+      // The bristle turns with a body bearing by θ_B = Σ B_l δq_l (B_ψ = R, B_x = 0).
+      if (col_bearing) d_q += c.d_bearing_rotation * col->b[l];
       const Matrix9x3d d_v = sign * c.d_velocity * col->a[l] + d_omega * col->b[l];
       for (int g = 0; g < blocks; ++g) {
         const auto [row, k, row_bearing] = BlockOf(s, g);
@@ -123,13 +127,15 @@ void AddClearanceJointJacobians(const Model& model, const VectorXd& q, const Vec
 }
 
 void UpdateClearanceJointHistory(const Model& model, const VectorXd& q, const VectorXd& v,
-                                 const std::vector<Matrix3d>& rotation,
+                                 const std::vector<Matrix3d>& rotation, double step,
                                  std::vector<ContactPairHistory>* history) {
   const auto& joints = model.clearance_joints();
   for (std::size_t j = 0; j < joints.size(); ++j) {
     ContactPairHistory& stored = (*history)[j];
     const ClearanceJointState s =
-        CalcClearanceJointState(model, static_cast<Index>(j), q, v, rotation, stored);
+        CalcClearanceJointState(model, static_cast<Index>(j), q, v, rotation, stored, false, step);
+    // The bristle at the end of the step, from the history at its start (zero while apart).
+    stored.bristle = s.contact.bristle;
     // δ̇ = n·u also in free flight, with n along the eccentricity.
     const Vector3d& e = s.contact.eccentricity;
     const double closing =

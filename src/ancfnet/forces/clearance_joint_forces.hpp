@@ -31,16 +31,17 @@ struct ClearanceJointState {
 };
 
 /// Joint `j` of the model at (q, v), the bodies' reference rotations `rotation` and its history
-/// (its v₀, ContactPairHistory::speed). The mode compares |δ̇| with the stored impact speed v₀
-/// (at least the law's minimum approach speed).
+/// (its v₀, ContactPairHistory::speed, and its LuGre bristle at the start of the step, advanced
+/// over `step`; 0: the force at the state, for outputs). The mode compares |δ̇| with the stored
+/// impact speed v₀ (at least the law's minimum approach speed).
 ClearanceJointState CalcClearanceJointState(const Model& model, Index j, const VectorXd& q,
                                             const VectorXd& v,
                                             const std::vector<Matrix3d>& rotation,
                                             const ContactPairHistory& history,
-                                            bool with_jacobian = false);
+                                            bool with_jacobian = false, double step = 0.0);
 
 /// ws.internal_force −= Q and ws.viscous_force −= Q_dissipative of every joint, with the bodies'
-/// rotations and the joints' histories in ws.
+/// rotations, the joints' histories and the step size (Workspace::joint_step) in ws.
 void AddClearanceJointForces(const Model& model, const VectorXd& q, const VectorXd& v,
                              Workspace& ws);
 
@@ -54,10 +55,12 @@ void AddClearanceJointJacobians(const Model& model, const VectorXd& q, const Vec
                                 const IterationWeights& weights, const Workspace& ws,
                                 SystemMatrix* matrix);
 
-/// After an accepted step, per joint as for contact pairs (forces/impact_speed.hpp): apart, minus
-/// its closing speed; just touched, its impact speed; touching, unchanged.
+/// After an accepted step of size `step` to (q, v), per joint as for contact pairs
+/// (forces/impact_speed.hpp): apart, minus its closing speed; just touched, its impact speed;
+/// touching, unchanged. The LuGre bristle of a touching joint is advanced over the step (in the
+/// bearing's frame, ClearanceContact), that of a joint apart is zero.
 void UpdateClearanceJointHistory(const Model& model, const VectorXd& q, const VectorXd& v,
-                                 const std::vector<Matrix3d>& rotation,
+                                 const std::vector<Matrix3d>& rotation, double step,
                                  std::vector<ContactPairHistory>* history);
 
 }  // namespace ancfnet

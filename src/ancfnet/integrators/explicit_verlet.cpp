@@ -19,6 +19,12 @@ ExplicitVerletIntegrator::ExplicitVerletIntegrator(const Model& model)
     throw InputError(
         "contact friction: the LuGre law needs an implicit integrator (generalized_alpha or "
         "implicit_midpoint), not explicit_verlet");
+  for (const ClearanceJoint& joint : model.clearance_joints())
+    if (joint.friction && joint.friction->kind == FrictionLawKind::kLuGre)
+      throw InputError(fmt::format(
+          "joint '{}' friction: the LuGre law needs an implicit integrator (generalized_alpha or "
+          "implicit_midpoint), not explicit_verlet",
+          joint.name));
   // Its critical step is estimated from the cable kernel alone.
   if (!model.beam_elements().empty())
     throw InputError(

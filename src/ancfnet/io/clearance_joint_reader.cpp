@@ -36,11 +36,7 @@ void ReadClearanceJoint(const YamlValue& item,
     if (!(spec.axis.norm() > 0.0)) v->Fail("the joint axis must be a non-zero vector");
   }
   spec.normal = ReadNormalLaw(map.Get("contact"));
-  if (auto v = map.Find("friction")) {
-    spec.friction = ReadFriction(*v);
-    if (spec.friction->kind == FrictionLawKind::kLuGre)
-      v->Fail("clearance joints take a regularised friction law (tanh, ambrosio)");
-  }
+  if (auto v = map.Find("friction")) spec.friction = ReadFriction(*v);
   // The builder's remaining checks name the side ("journal: no rigid body named 'x'").
   if (spec.journal.kind == JointAnchor::Kind::kGround &&
       spec.bearing.kind == JointAnchor::Kind::kGround)

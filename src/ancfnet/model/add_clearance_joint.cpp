@@ -27,12 +27,7 @@ void ModelBuilder::AddClearanceJoint(const ClearanceJointSpec& spec) {
       spec.bearing.kind == JointAnchor::Kind::kGround)
     throw InputError("a clearance joint cannot join the ground to itself");
   ValidateNormalLaw(spec.normal);
-  if (spec.friction) {
-    ValidateFrictionLaw(*spec.friction);
-    if (spec.friction->kind == FrictionLawKind::kLuGre)
-      throw InputError(
-          "clearance joints take a regularised friction law (tanh, ambrosio), not lugre");
-  }
+  if (spec.friction) ValidateFrictionLaw(*spec.friction);
   ClearanceJoint joint{.name = spec.name,
                        .type = spec.type,
                        .journal = ResolveJointAnchor(model_, spec.journal, "journal"),

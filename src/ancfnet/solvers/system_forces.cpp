@@ -12,7 +12,10 @@ SystemForces::SystemForces(const Model& model, const Workspace& ws, double near_
 }
 
 void SystemForces::FindContacts(const State& state, double h, bool with_step_size) {
-  if (with_step_size) target_contact_.SetStepSize(h);
+  if (with_step_size) {
+    target_contact_.SetStepSize(h);
+    joint_step_ = h;
+  }
   if (!self_contact_.empty()) self_contact_.FindCandidates(state, h);
 }
 
@@ -47,6 +50,7 @@ void SystemForces::SetStep(const VectorXd& q_start, const VectorXd& v_start, con
 void SystemForces::Calc(const VectorXd& q, const VectorXd& v,
                         const std::vector<ContactPairHistory>& history, double load_factor,
                         Workspace& ws) const {
+  ws.joint_step = joint_step_;
   CalcInternalForces(model_, q, v, ws);
   if (step_end_) AddStepForceCorrections(model_, *step_end_, ws);
   if (damping_) damping_->AddForces(v, ws);
@@ -60,6 +64,7 @@ void SystemForces::AssembleIterationMatrix(const VectorXd& q, const VectorXd& v,
                                            const std::vector<ContactPairHistory>& history,
                                            const IterationWeights& weights, double load_factor,
                                            Workspace& ws, SystemMatrix* matrix) const {
+  ws.joint_step = joint_step_;
   ancfnet::AssembleIterationMatrix(model_, q, v, weights, load_factor, ws, matrix);
   if (step_end_) AddStepForceCorrectionJacobians(model_, *step_end_, weights.stiffness, ws, matrix);
   if (damping_) damping_->AddRayleighJacobian(weights.damping, matrix);
@@ -89,8 +94,9 @@ void SystemForces::UpdateHistories(State* state) {
     self_contact_.ClearStep();
     self_contact_.UpdateHistory(state->q, state->v, &state->self_contact_history);
   }
-  UpdateClearanceJointHistory(model_, state->q, state->v, state->body_rotation,
+  UpdateClearanceJointHistory(model_, state->q, state->v, state->body_rotation, joint_step_,
                               &state->joint_history);
+  joint_step_ = 0.0;
 }
 
 }  // namespace ancfnet

@@ -38,7 +38,8 @@ class SystemForces {
   /// The contact pairs to watch during a step of size h from `state` (h = 0: the forces at the
   /// state itself): the self-contact candidates (SelfContact::FindCandidates). With
   /// `with_step_size`, h is also the step over which the LuGre law's bristles of target contact
-  /// are advanced (TargetContact::SetStepSize).
+  /// and of the clearance joints are advanced (TargetContact::SetStepSize,
+  /// Workspace::joint_step).
   void FindContacts(const State& state, double h, bool with_step_size);
   /// After FindContacts: the owner pairs of the iteration matrix's contact couplings a step of
   /// size h from (q, v) needs (the coupled self-contact pairs, the probes near targets carried
@@ -86,6 +87,7 @@ class SystemForces {
   SelfContact self_contact_;
   std::vector<std::pair<Index, Index>> body_couplings_;  // probes near targets on bodies
   const VectorXd* step_end_ = nullptr;                   // SetStep
+  double joint_step_ = 0.0;  // FindContacts: h of the clearance joints' bristles (Workspace)
 };
 
 }  // namespace ancfnet

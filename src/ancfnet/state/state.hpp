@@ -17,8 +17,8 @@ struct ContactPairHistory {
   double speed = 0.0;
   /// The bristle deflection z (m) of the LuGre friction law at the end of the last accepted
   /// step, a vector in the tangent plane; zero while apart and without that law. In world
-  /// coordinates, except for a target carried by a rigid body: in the body's frame (z_W = R_WB
-  /// z), so that it turns with the body.
+  /// coordinates, except for a target carried by a rigid body and a clearance joint's bearing on
+  /// one: in the body's frame (z_W = R_WB z), so that it turns with the body.
   Vector3d bristle = Vector3d::Zero();
 };
 
@@ -44,7 +44,8 @@ struct State {
   std::vector<ContactPairHistory> contact_history;
   /// Sorted by (first, second).
   std::vector<SelfContactPairHistory> self_contact_history;
-  /// Per clearance joint: its contact's impact speed (forces/clearance_joint_forces.hpp).
+  /// Per clearance joint: its contact's impact speed and LuGre bristle
+  /// (forces/clearance_joint_forces.hpp).
   std::vector<ContactPairHistory> joint_history;
   /// Per rigid body: its reference orientation R_ref, R_WB = R_ref exp(ψ̃) with ψ the body's
   /// rotation coordinates (model/rigid_body.hpp). R_WB(0) at t = 0; the integrators rebase it

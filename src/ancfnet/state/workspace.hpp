@@ -52,6 +52,9 @@ struct Workspace {
   // Copied from State::joint_history by the integrators at the start of a step: the impact
   // speeds the clearance joints' forces are evaluated with.
   std::vector<ContactPairHistory> joint_history;
+  // Set by SystemForces::Calc and AssembleIterationMatrix: the step size h (s) over which the
+  // clearance joints' LuGre bristles are advanced from joint_history; 0: the forces at the state.
+  double joint_step = 0.0;
 
   // Global coordinate vectors (all coordinates, fixed included).
   VectorXd internal_force;  ///< Q_int(q, v): CalcInternalForces

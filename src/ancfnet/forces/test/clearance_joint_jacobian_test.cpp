@@ -1,6 +1,7 @@
 // The generalised forces of clearance joints between every kind of anchor (ground, free spinning
 // rigid bodies, a point mass, ANCF cable points whose slope carries the friction moment), and
-// their Jacobians ∂Q/∂q and ∂Q/∂q̇ against central differences.
+// their Jacobians ∂Q/∂q and ∂Q/∂q̇ against central differences; with the LuGre law, a nonzero
+// stored bristle stepped over h (turning with a body bearing, docs/theory.md "Clearance joints").
 
 #include <gtest/gtest.h>
 
@@ -78,41 +79,56 @@ Model MakeJointModel(const Case& c, bool journal_on_point_mass) {
   return builder.Build();
 }
 
-VectorXd CalcJointForces(const Model& model, const VectorXd& q, const VectorXd& v) {
+// The joint's history and step: impact speed 0.2 m/s, a LuGre bristle z₀ (in the bearing's
+// frame, at σ₀ = 10⁴/m about a tenth of μ_s) advanced over h = 1 ms (other laws ignore both).
+Workspace MakeJointWorkspace(const Model& model) {
   Workspace ws(model);
   ws.joint_history[0].speed = 0.2;
+  ws.joint_history[0].bristle = Vector3d(2e-6, -1e-6, 3e-6);
+  ws.joint_step = 1e-3;
+  return ws;
+}
+
+VectorXd CalcJointForces(const Model& model, const VectorXd& q, const VectorXd& v) {
+  Workspace ws = MakeJointWorkspace(model);
   ws.internal_force.setZero();
   ws.viscous_force.setZero();
   AddClearanceJointForces(model, q, v, ws);
   return ws.internal_force;
 }
 
+// ‖analytic − FD‖/‖FD‖ over all columns, or over the `count` columns from `first` (3 from a body
+// bearing's ψ: the bristle's turning with the body is small beside the normal law's stiffness).
 double CalcJacobianError(const Model& model, const VectorXd& q, const VectorXd& v,
-                         const IterationWeights& weights) {
+                         const IterationWeights& weights, Index first = 0, Index count = -1) {
   const DofMap all = DofMap::AllCoordinates(model);
   SystemMatrix matrix(model, all);
-  Workspace ws(model);
-  ws.joint_history[0].speed = 0.2;
+  const Workspace ws = MakeJointWorkspace(model);
   matrix.SetZero();
   AddClearanceJointJacobians(model, q, v, weights, ws, &matrix);
   const MatrixXd analytic = MatrixXd(matrix.matrix());
   const MatrixXd fd = test::CalcCentralDifferenceJacobian(
       [&](const VectorXd& x, const VectorXd& x_dot) { return CalcJointForces(model, x, x_dot); }, q,
       v, weights.stiffness != 0.0);
-  return (analytic - fd).norm() / fd.norm();
+  if (count < 0) count = fd.cols() - first;
+  return (analytic - fd).middleCols(first, count).norm() / fd.middleCols(first, count).norm();
 }
 
 void ExpectJacobiansMatch(const Case& c, bool journal_on_point_mass = false) {
   const Model model = MakeJointModel(c, journal_on_point_mass);
   const State state = MakeInitialState(model);
-  Workspace ws(model);
-  ws.joint_history[0].speed = 0.2;
-  const ClearanceJointState s =
-      CalcClearanceJointState(model, 0, state.q, state.v, ws.body_rotation, ws.joint_history[0]);
+  const Workspace ws = MakeJointWorkspace(model);
+  const ClearanceJointState s = CalcClearanceJointState(
+      model, 0, state.q, state.v, ws.body_rotation, ws.joint_history[0], false, ws.joint_step);
   ASSERT_TRUE(s.contact.touching) << c.label;
   EXPECT_NEAR(s.contact.penetration, 5e-5, 1e-12) << c.label;
   if (c.friction) {
     EXPECT_GT(s.contact.friction.norm(), 1e-3 * s.contact.normal_force) << c.label;
+  }
+  if (c.friction && c.friction->kind == FrictionLawKind::kLuGre) {
+    // The bristle is stepped (it moved from z₀) and holds a part of the friction force.
+    EXPECT_GT((s.contact.bristle - ws.joint_history[0].bristle).norm(), 1e-9) << c.label;
+    EXPECT_GT(s.contact.bristle.norm(), 1e-7) << c.label;
   }
   for (const IterationWeights weights :
        {IterationWeights{.mass = 0, .damping = 0, .stiffness = 1},
@@ -121,10 +137,19 @@ void ExpectJacobiansMatch(const Case& c, bool journal_on_point_mass = false) {
     std::printf("%s, %s Jacobian: relative error %.2e\n", c.label,
                 weights.stiffness != 0.0 ? "stiffness" : "damping", error);
     EXPECT_LT(error, 1e-6) << c.label;
+    if (c.friction && c.friction->kind == FrictionLawKind::kLuGre && c.bearing == Kind::kBody) {
+      const Index psi =
+          model.rigid_bodies()[model.clearance_joints()[0].bearing.body].rotation_dof();
+      const double turning = CalcJacobianError(model, state.q, state.v, weights, psi, 3);
+      std::printf("%s, the bearing's ψ columns: relative error %.2e\n", c.label, turning);
+      EXPECT_LT(turning, 1e-6) << c.label;
+    }
   }
 }
 
 const FrictionLaw kTanh = MakeTanhFriction(0.3, 0.2, 1e-1, 1.0);
+// μ_s, μ_k, v_s (m/s), σ₀ (1/m), σ₁ (s/m), σ₂ (N s/m).
+const FrictionLaw kLuGre = MakeLuGreFriction(0.4, 0.3, 1e-2, 1e4, 50.0, 0.1);
 
 TEST(ClearanceJointJacobian, BodyJournalInACablePointBearing) {
   ExpectJacobiansMatch({"revolute body in cable", Kind::kBody, Kind::kPoint,
@@ -148,6 +173,19 @@ TEST(ClearanceJointJacobian, BodyInBodyAndPointMassInBody) {
                        /*journal_on_point_mass=*/true);
   ExpectJacobiansMatch({"revolute body in body, frictionless", Kind::kBody, Kind::kBody,
                         ClearanceJoint::Type::kRevolute, std::nullopt});
+}
+
+TEST(ClearanceJointJacobian, LuGreBristleInBodyAndCablePointBearings) {
+  // A body bearing turns the bristle with it (z_W = R_B z); a cable point's is in world axes.
+  ExpectJacobiansMatch({"revolute body in body, LuGre", Kind::kBody, Kind::kBody,
+                        ClearanceJoint::Type::kRevolute, kLuGre});
+  ExpectJacobiansMatch({"spherical ground in body, LuGre", Kind::kGround, Kind::kBody,
+                        ClearanceJoint::Type::kSpherical, kLuGre});
+  ExpectJacobiansMatch({"spherical body in cable, LuGre", Kind::kBody, Kind::kPoint,
+                        ClearanceJoint::Type::kSpherical, kLuGre});
+  ExpectJacobiansMatch({"revolute point mass in body, LuGre", Kind::kPoint, Kind::kBody,
+                        ClearanceJoint::Type::kRevolute, kLuGre},
+                       /*journal_on_point_mass=*/true);
 }
 
 TEST(ClearanceJointForces, ActionAndReactionBalanceAndTheFrictionMomentIsMuNR) {

@@ -1,6 +1,6 @@
 // Scene files with clearance joints: every key read into the model (anchors on a body, a cable
-// point, a point mass and the ground), the joint probe's columns, and bad input reported with
-// file, line and key.
+// point, a point mass and the ground), the joint probe's columns, LuGre friction, and bad input
+// reported with file, line and key.
 
 #include <gtest/gtest.h>
 
@@ -82,6 +82,21 @@ TEST(ClearanceJointScene, ReadsEveryKey) {
                                       "orbit.friction_moment", "orbit.mode"}));
 }
 
+TEST(ClearanceJointScene, ReadsLuGreFriction) {
+  const std::string text =
+      Replace(kJoints, "friction: {type: tanh, kinetic: 0.1}",
+              "friction: {type: lugre, static: 0.4, kinetic: 0.3, stribeck_speed: 0.02,\n"
+              "               bristle_stiffness: 2.0e4, bristle_damping: 80}");
+  const auto& friction = ParseScene(text).model.clearance_joints()[0].friction;
+  ASSERT_TRUE(friction.has_value());
+  EXPECT_EQ(friction->kind, FrictionLawKind::kLuGre);
+  EXPECT_DOUBLE_EQ(friction->static_coefficient, 0.4);
+  EXPECT_DOUBLE_EQ(friction->kinetic_coefficient, 0.3);
+  EXPECT_DOUBLE_EQ(friction->stribeck_speed, 0.02);
+  EXPECT_DOUBLE_EQ(friction->bristle_stiffness, 2e4);
+  EXPECT_DOUBLE_EQ(friction->bristle_damping, 80.0);
+}
+
 // The message of ParseScene(text), or "" when it is accepted.
 std::string ErrorOf(const std::string& text) {
   try {
@@ -111,10 +126,12 @@ TEST(ClearanceJointScene, BadInputNamesLineAndKey) {
       // (`revolute` is an ideal joint: the list names both kinds.)
       {"type: revolute_clearance", "type: revolute_clearence",
        "<string>:17:11: expected one of spherical, revolute, "},
+      // The LuGre law's keys as under contact: a missing σ₀, a negative σ₁.
+      {"friction: {type: tanh, kinetic: 0.1}", "friction: {type: lugre, kinetic: 0.1}",
+       "<string>:24:15: missing required key 'bristle_stiffness' in 'friction'"},
       {"friction: {type: tanh, kinetic: 0.1}",
-       "friction: {type: lugre, kinetic: 0.1, "
-       "bristle_stiffness: 1.0e4}",
-       "regularised friction law"},
+       "friction: {type: lugre, kinetic: 0.1, bristle_stiffness: 1.0e4, bristle_damping: -5}",
+       "<string>:24:86: expected a number ≥ 0, got '-5' (key 'bristle_damping')"},
       {"joint: tip", "joint: top", "no clearance joint named 'top'"},
   };
   for (const auto& c : cases) {
