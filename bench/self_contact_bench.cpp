@@ -72,7 +72,7 @@ void BM_SelfContactSearch(benchmark::State& state) {
   NetSpec net;
   net.name = "net";
   net.topology = MakeGridNet({.side_u = 1.0, .side_v = 1.0, .meshes_u = n, .meshes_v = n});
-  net.thread = MakeThreadProperties(Material{.youngs_modulus = 1e11, .density = 970},
+  net.thread = MakeRopeProperties(Material{.youngs_modulus = 1e11, .density = 970},
                                     MakeCircleSection(2 * kRadius));
   net.elements_per_thread = 2;
   AddNet(builder, net);

@@ -87,7 +87,7 @@ const Section& ReadSection(const YamlMap& map, const YamlMap& fallback, const Li
 // (tension_only, rope_smoothing_strain, bending), else the net defaults.
 CableProperties ReadThreadProperties(const YamlMap& settings, const Material& material,
                                      const Section& section) {
-  CableProperties p = MakeThreadProperties(material, section);
+  CableProperties p = MakeRopeProperties(material, section);
   if (auto v = settings.Find("tension_only")) p.tension_only = v->AsBool();
   if (auto v = settings.Find("rope_smoothing_strain"))
     p.rope_smoothing_strain = v->AsNumberIn(0.0, 0.1);

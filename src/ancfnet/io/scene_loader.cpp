@@ -191,8 +191,10 @@ void ReadCable(const YamlValue& item, const Library& library, ModelBuilder* buil
   CheckSlenderCable(section, (spec.end - spec.start).norm(), fmt::format("cable '{}'", spec.name),
                     map.Get("section"));
   CableProperties& properties = spec.properties;
-  properties = MakeCableProperties(material, section);
-  if (auto v = map.Find("tension_only")) properties.tension_only = v->AsBool();
+  // A tension-only cable is a rope and takes the rope's defaults (smoothing, simple bending).
+  const std::optional<YamlValue> tension_only = map.Find("tension_only");
+  properties = tension_only && tension_only->AsBool() ? MakeRopeProperties(material, section)
+                                                      : MakeCableProperties(material, section);
   if (auto v = map.Find("rope_smoothing_strain"))
     properties.rope_smoothing_strain = v->AsNumberIn(0.0, 0.1);
   if (auto v = map.Find("bending")) properties.bending_model = ReadBendingModel(*v);

@@ -32,4 +32,12 @@ CableProperties MakeCableProperties(const Material& material, const Section& sec
   return p;
 }
 
+CableProperties MakeRopeProperties(const Material& material, const Section& section) {
+  CableProperties p = MakeCableProperties(material, section);
+  p.tension_only = true;
+  p.rope_smoothing_strain = kDefaultRopeSmoothingStrain;
+  p.bending_model = BendingModel::kSecondDerivative;
+  return p;
+}
+
 }  // namespace ancfnet

@@ -49,4 +49,16 @@ struct CableProperties {
 /// Cable properties of a material and a section: EA, EI, ρA and the damping times.
 CableProperties MakeCableProperties(const Material& material, const Section& section);
 
+/// The smoothing strain ε_s of ropes by default: on a slack pendulum its trajectory error is that
+/// of a step of 10⁻³ s, and it takes 80 % of the step cuts of ε_s = 10⁻⁵ (docs/theory.md, "Smooth
+/// rope law and simple bending").
+inline constexpr double kDefaultRopeSmoothingStrain = 1e-4;
+
+/// Properties of a rope (a net thread, a tether, a tension-only cable) of this material and
+/// section: the rope law (tension only), smoothed over kDefaultRopeSmoothingStrain (an error of
+/// at most EA ε_s/2 in the axial force; it removes the Newton failures of ropes going slack and
+/// taut), and the simple bending model ½ EI ∫|r''|², regular where a slack rope's |r'| shrinks
+/// (the exact curvature |r′ × r″|/|r′|³ blows up there and Newton fails).
+CableProperties MakeRopeProperties(const Material& material, const Section& section);
+
 }  // namespace ancfnet

@@ -59,14 +59,6 @@ void Validate(const NetSpec& spec) {
 
 }  // namespace
 
-CableProperties MakeThreadProperties(const Material& material, const Section& section) {
-  CableProperties p = MakeCableProperties(material, section);
-  p.tension_only = true;
-  p.rope_smoothing_strain = 1e-4;
-  p.bending_model = BendingModel::kSecondDerivative;
-  return p;
-}
-
 std::string KnotName(const std::string& net, Index knot) {
   return fmt::format("{}.k{}", net, knot);
 }

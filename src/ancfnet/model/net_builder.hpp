@@ -69,12 +69,6 @@ struct NetSpec {
   std::optional<TetherSpec> tether;  ///< a tether from a chaser point (model/net_tether.hpp)
 };
 
-/// Properties of a net thread or tether of this material and section with the defaults of nets:
-/// the rope law (tension only), smoothed over a strain of 1e-4 (an error of at most EA·5e-5 in the
-/// axial force; it removes the Newton failures of threads going slack and taut), and the simple
-/// bending model ½ EI ∫|r''|², regular where a slack rope's |r'| shrinks.
-CableProperties MakeThreadProperties(const Material& material, const Section& section);
-
 /// Adds the net to `builder`: point masses "NAME.k<i>" for the knots, cables "NAME.t<j>" for the
 /// threads, links "NAME.t<j>.start" / ".end" for compliant knots, the tether when asked
 /// (AddNetTether), and the net description.

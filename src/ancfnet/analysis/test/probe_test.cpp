@@ -52,7 +52,7 @@ TEST(NetProbe, CentroidVelocityIsTheMeanKnotVelocity) {
   spec.name = "line";
   spec.topology = MakeGraphNet({Vector3d(0, 0, 0), Vector3d(1, 0, 0)}, {{0, 1}});
   spec.thread =
-      MakeThreadProperties({.youngs_modulus = 1e9, .density = 1000}, MakeCircleSection(0.002));
+      MakeRopeProperties({.youngs_modulus = 1e9, .density = 1000}, MakeCircleSection(0.002));
   spec.knot_masses = {{0, 0.1, Vector3d(1, 2, 3)}, {1, 0.1, Vector3d(3, 0, -1)}};
   ModelBuilder builder;
   AddNet(builder, spec);

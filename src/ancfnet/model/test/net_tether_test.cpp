@@ -21,7 +21,7 @@ NetSpec MakeSpec(KnotModel knots) {
   spec.name = "net";
   spec.topology = MakeGridNet({.side_u = 1.0, .side_v = 1.0, .meshes_u = 2, .meshes_v = 2});
   spec.thread =
-      MakeThreadProperties({.youngs_modulus = 3e9, .density = 1140}, MakeCircleSection(0.001));
+      MakeRopeProperties({.youngs_modulus = 3e9, .density = 1140}, MakeCircleSection(0.001));
   spec.knot_model = knots;
   spec.knot_mass = 1e-3;
   spec.link_law = MakeLinearLaw(1e4);
