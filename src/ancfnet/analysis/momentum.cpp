@@ -30,6 +30,17 @@ Vector3d CalcAngularMomentum(const Model& model, const Workspace& ws, const Vect
         angular += ws.element_mass[e](3 * i, 3 * j) *
                    Vector3d(x.segment<3>(3 * i)).cross(Vector3d(x_dot.segment<3>(3 * j)));
   }
+  // The spin of beam sections: ∫ (ρI_z d₂ × ḋ₂ + ρI_y d₃ × ḋ₃) dx over the eight blocks.
+  const auto& beams = model.beam_elements();
+  for (std::size_t b = 0; b < beams.size(); ++b) {
+    const Vector24d x = model.Gather(beams[b], q);
+    const Vector24d x_dot = model.Gather(beams[b], v);
+    for (int i = 0; i < kBeamElementBlocks; ++i)
+      for (int j = 0; j < kBeamElementBlocks; ++j)
+        if (ws.beam_rotary_mass[b](3 * i, 3 * j) != 0.0)
+          angular += ws.beam_rotary_mass[b](3 * i, 3 * j) *
+                     Vector3d(x.segment<3>(3 * i)).cross(Vector3d(x_dot.segment<3>(3 * j)));
+  }
   for (const PointMass& point : model.point_masses())
     angular += point.mass * Vector3d(q.segment<3>(point.dof)).cross(Vector3d(v.segment<3>(point.dof)));
   const auto& bodies = model.rigid_bodies();

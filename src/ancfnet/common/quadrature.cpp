@@ -43,4 +43,11 @@ const GaussRule& GetGaussRule(int n) {
   return rules[n - 1];
 }
 
+double CalcGaussPointBasis(const GaussRule& rule, int i, double xi) {
+  double basis = 1.0;
+  for (int j = 0; j < rule.size; ++j)
+    if (j != i) basis *= (xi - rule.points[j]) / (rule.points[i] - rule.points[j]);
+  return basis;
+}
+
 }  // namespace ancfnet

@@ -20,4 +20,9 @@ struct GaussRule {
 /// Golub–Welsch eigenvalue method (Golub & Welsch 1969). Results are cached; thread-safe.
 const GaussRule& GetGaussRule(int n);
 
+/// The Lagrange basis polynomial of Gauss point i of `rule` at ξ (extrapolating outside the
+/// points): ℓᵢ(ξ) = ∏_{j≠i} (ξ − ξⱼ) / (ξᵢ − ξⱼ). Σᵢ fᵢ ℓᵢ(ξ) is the polynomial of degree n − 1
+/// through values fᵢ at the points (the Gauss-point extrapolation of Hinton & Campbell 1974).
+double CalcGaussPointBasis(const GaussRule& rule, int i, double xi);
+
 }  // namespace ancfnet

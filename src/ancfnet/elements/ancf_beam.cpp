@@ -8,9 +8,7 @@
 namespace ancfnet {
 namespace {
 
-// Gauss points of the axial strain (Γ₁ of a cubic axis is quadratic in ξ: three points leave no
-// zero-energy mode) and of the shear, torsion and bending strains (two: the assumed shear strain).
-constexpr int kAxialPoints = 3;
+// Gauss points of the shear, torsion and bending strains (two: the assumed shear strain).
 constexpr int kSectionPoints = 2;
 
 // Strains sampled at one of the two section points, in this order.
@@ -176,7 +174,7 @@ double EvaluateBeam(const BeamElementParameters& p, const Vector24d& e, const Ve
   const bool damped = p.axial_damping_time > 0.0 || p.bending_damping_time > 0.0;
   double energy = 0.0;
 
-  const GaussRule& axial = GetGaussRule(kAxialPoints);
+  const GaussRule& axial = GetGaussRule(kBeamAxialGaussPoints);
   for (int k = 0; k < axial.size; ++k) {
     const BeamLocalMap map = MakeBeamLocalMap(axial.points[k], p.length);
     const StrainSet<1, 1> set{{map}, {{{AxialStrain(MapToLocal(map, e), h)}}}};
@@ -218,6 +216,10 @@ double EvaluateBeam(const BeamElementParameters& p, const Vector24d& e, const Ve
 void CalcBeamInternalForce(const BeamElementParameters& p, const Vector24d& e,
                            const Vector24d& e_dot, const BeamForceOutputs& out) {
   EvaluateBeam(p, e, e_dot, out);
+}
+
+double CalcBeamAxialStrain(const BeamElementParameters& p, const Vector24d& e, double xi) {
+  return AxialStrain(MapToLocal(MakeBeamLocalMap(xi, p.length), e), false).value;
 }
 
 double CalcBeamStrainEnergy(const BeamElementParameters& p, const Vector24d& e) {

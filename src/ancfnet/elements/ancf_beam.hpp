@@ -11,6 +11,10 @@
 
 namespace ancfnet {
 
+/// Gauss points of the axial strain Γ₁ (Γ₁ of a cubic axis is quadratic in ξ: three points leave
+/// no zero-energy mode).
+inline constexpr int kBeamAxialGaussPoints = 3;
+
 /// Constant properties of one beam element in its section frame (d₂, d₃). All SI.
 struct BeamElementParameters {
   double length = 0.0;               ///< reference (stress-free) length L (m), > 0
@@ -54,6 +58,10 @@ struct BeamForceOutputs {
 /// ṡᵢ = ∇sᵢ·ė, over the same strains (eq. B14). Outputs are overwritten, not accumulated.
 void CalcBeamInternalForce(const BeamElementParameters& p, const Vector24d& e,
                            const Vector24d& e_dot, const BeamForceOutputs& out);
+
+/// Axial strain Γ₁ = r'·(d₂ × d₃) / (|d₂| |d₃|) − 1 at ξ ∈ [0, 1] (eq. B4): the stretch of the
+/// axis along the section's normal, to which the section's normal force N = EA Γ₁ is conjugate.
+double CalcBeamAxialStrain(const BeamElementParameters& p, const Vector24d& e, double xi);
 
 /// Strain energy U (J) of the same integrals.
 double CalcBeamStrainEnergy(const BeamElementParameters& p, const Vector24d& e);

@@ -15,12 +15,9 @@ double CalcCableTension(const CableElementParameters& p, double strain) {
 double CalcCableGaussPointTension(const CableElementParameters& p, const Vector12d& e, double xi) {
   const GaussRule& rule = GetGaussRule(p.axial_gauss_points);
   double tension = 0.0;
-  for (int i = 0; i < rule.size; ++i) {
-    double basis = 1.0;
-    for (int j = 0; j < rule.size; ++j)
-      if (j != i) basis *= (xi - rule.points[j]) / (rule.points[i] - rule.points[j]);
-    tension += basis * CalcCableTension(p, CalcCableStrain(p, e, rule.points[i]).axial);
-  }
+  for (int i = 0; i < rule.size; ++i)
+    tension += CalcGaussPointBasis(rule, i, xi) *
+               CalcCableTension(p, CalcCableStrain(p, e, rule.points[i]).axial);
   return tension;
 }
 
@@ -30,11 +27,14 @@ Vector3d CalcCableMidpointForce(const CableElementParameters& p, const Vector12d
   return force.segment<3>(6);
 }
 
+Vector3d InterpolateStationForce(const CableStationForces& forces, double xi) {
+  return xi <= 0.5 ? forces.start + (2.0 * xi) * (forces.middle - forces.start)
+                   : forces.middle + (2.0 * xi - 1.0) * (forces.end - forces.middle);
+}
+
 double CalcCableStationTension(const CableElementParameters& p, const Vector12d& e,
                                const CableStationForces& forces, double xi) {
-  const Vector3d force = xi <= 0.5
-                             ? forces.start + (2.0 * xi) * (forces.middle - forces.start)
-                             : forces.middle + (2.0 * xi - 1.0) * (forces.end - forces.middle);
+  const Vector3d force = InterpolateStationForce(forces, xi);
   const HermiteShape shape = CalcHermiteShape(xi, p.length);
   const Vector3d slope = Eigen::Map<const Eigen::Matrix<double, 3, 4>>(e.data()) * shape.ds;
   const double tension = force.dot(slope) / slope.norm();

@@ -38,9 +38,12 @@ struct CableStationForces {
   Vector3d end = Vector3d::Zero();     ///< at ξ = 1
 };
 
+/// The section force F(ξ) (N) at ξ ∈ [0, 1], interpolated linearly between the stations on each
+/// half of the element.
+Vector3d InterpolateStationForce(const CableStationForces& forces, double xi);
+
 /// Recovered tension (N) at ξ ∈ [0, 1]: T(ξ) = F(ξ) · r'(ξ)/|r'(ξ)|, the section force F
-/// interpolated linearly between the stations on each half of the element and projected on the
-/// tangent; max(T, 0) for a tension-only cable.
+/// (InterpolateStationForce) projected on the tangent; max(T, 0) for a tension-only cable.
 double CalcCableStationTension(const CableElementParameters& p, const Vector12d& e,
                                const CableStationForces& forces, double xi);
 

@@ -3,17 +3,23 @@
 namespace ancfnet {
 namespace {
 
-// (I₄ ⊗ A) x for a 12-vector x of four 3-blocks.
-Vector12d ApplyToBlocks(const Matrix3d& a, const Vector12d& x) {
-  Vector12d y;
-  for (int b = 0; b < 4; ++b) y.segment<3>(3 * b) = a * x.segment<3>(3 * b);
+// (I ⊗ A) x for a vector x of 3-blocks (12: a cable element, 24: a beam element).
+template <int kSize>
+Eigen::Matrix<double, kSize, 1> ApplyToBlocks(const Matrix3d& a,
+                                              const Eigen::Matrix<double, kSize, 1>& x) {
+  Eigen::Matrix<double, kSize, 1> y;
+  for (int b = 0; b < kSize / 3; ++b)
+    y.template segment<3>(3 * b) = a * x.template segment<3>(3 * b);
   return y;
 }
 
-// M_e (I₄ ⊗ A).
-Matrix12d MassTimesBlocks(const Matrix12d& mass, const Matrix3d& a) {
-  Matrix12d m;
-  for (int b = 0; b < 4; ++b) m.middleCols<3>(3 * b) = mass.middleCols<3>(3 * b) * a;
+// M (I ⊗ A).
+template <int kSize>
+Eigen::Matrix<double, kSize, kSize> MassTimesBlocks(const Eigen::Matrix<double, kSize, kSize>& mass,
+                                                    const Matrix3d& a) {
+  Eigen::Matrix<double, kSize, kSize> m;
+  for (int b = 0; b < kSize / 3; ++b)
+    m.template middleCols<3>(3 * b) = mass.template middleCols<3>(3 * b) * a;
   return m;
 }
 
@@ -40,6 +46,15 @@ void AddOrbitalFrameForces(const Model& model, const VectorXd& q, const VectorXd
     const Vector12d force = ws.element_mass[e] * accel;
     for (int i = 0; i < kCableElementDofs; ++i) ws.internal_force[elements[e].dofs[i]] -= force[i];
   }
+  // The sections' rotary inertia: the field on y d₂ + z d₃ (docs/theory.md, "Beams in an
+  // orbital frame").
+  const auto& beams = model.beam_elements();
+  for (std::size_t b = 0; b < beams.size(); ++b) {
+    const Vector24d accel =
+        ApplyToBlocks(k, model.Gather(beams[b], q)) + ApplyToBlocks(g, model.Gather(beams[b], v));
+    const Vector24d force = ws.beam_rotary_mass[b] * accel;
+    for (int i = 0; i < kBeamElementDofs; ++i) ws.internal_force[beams[b].dofs[i]] -= force[i];
+  }
   for (const PointMass& point : model.point_masses())
     ws.internal_force.segment<3>(point.dof) -=
         point.mass * (k * q.segment<3>(point.dof) + g * v.segment<3>(point.dof));
@@ -54,6 +69,9 @@ void AddOrbitalFrameJacobians(const Model& model, const Workspace& ws, double st
   for (std::size_t e = 0; e < model.elements().size(); ++e)
     matrix->AddElementBlock(static_cast<Index>(e), MassTimesBlocks(ws.element_mass[e], field),
                             -1.0);
+  for (std::size_t b = 0; b < model.beam_elements().size(); ++b)
+    matrix->AddBeamElementBlock(static_cast<Index>(b),
+                                MassTimesBlocks(ws.beam_rotary_mass[b], field), -1.0);
   const auto& points = model.point_masses();
   for (std::size_t i = 0; i < points.size(); ++i)
     matrix->AddPointMassBlock(static_cast<Index>(i), field, -points[i].mass);
@@ -67,6 +85,11 @@ double CalcOrbitalPotential(const Model& model, const Workspace& ws, const Vecto
   for (std::size_t e = 0; e < elements.size(); ++e) {
     const Vector12d x = model.Gather(elements[e], q);
     potential -= 0.5 * x.dot(ws.element_mass[e] * ApplyToBlocks(k, x));
+  }
+  const auto& beams = model.beam_elements();
+  for (std::size_t b = 0; b < beams.size(); ++b) {
+    const Vector24d x = model.Gather(beams[b], q);
+    potential -= 0.5 * x.dot(ws.beam_rotary_mass[b] * ApplyToBlocks(k, x));
   }
   for (const PointMass& point : model.point_masses())
     potential -= 0.5 * point.mass * q.segment<3>(point.dof).dot(k * q.segment<3>(point.dof));

@@ -6,7 +6,11 @@
 /// i.e. an extra acceleration K r + G ṙ with K = diag(3n², 0, −n²) and G = [0 2n 0; −2n 0 0;
 /// 0 0 0]. The field is linear in r and ṙ, so on a cable element, where r = S e, its generalised
 /// force is exactly M_e (I₄ ⊗ K) e + M_e (I₄ ⊗ G) ė (the same for slopes as for positions), and
-/// on a point mass m (K r + G ṙ).
+/// on a point mass m (K r + G ṙ). On a beam element, whose material points are
+/// r + y d₂ + z d₃, it is likewise its full mass matrix times (I₈ ⊗ K) e + (I₈ ⊗ G) ė: the centre
+/// line's part, as on a cable, plus the rotary part (Workspace::beam_rotary_mass) on d₂, d₃,
+/// which holds the gravity-gradient torque and the Coriolis forces of the sections' spin
+/// (docs/theory.md, "Beams in an orbital frame").
 ///
 /// Energy: the Coriolis part does no work (M ⊗ G is skew), and the tidal part derives from the
 /// potential V = −½ qᵀ M (I ⊗ K) q, which the energy account adds to the gravity column (the

@@ -50,7 +50,7 @@ void VtkSeriesWriter::CollectSamples(const Model& model, const State& state) {
         const double xi = static_cast<double>(i) / points_per_element_;
         const HermiteShape shape = CalcHermiteShape(xi, p.length);
         const CableStrain strain = CalcCableStrain(p, e, xi);
-        const double tension = CalcCableStationTension(p, e, forces, xi);
+        const double tension = CalcCableElementTension(model, cable, k, state.q, forces, xi);
         samples_.push_back({InterpolatePosition(e, shape.s), InterpolatePosition(e_dot, shape.s),
                             strain.axial, strain.curvature, tension});
         if (element.beam >= 0) {

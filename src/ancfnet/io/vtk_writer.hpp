@@ -22,8 +22,9 @@ namespace ancfnet {
 ///  - `axial_strain` ε = (r'·r' − 1)/2 and `curvature` κ (1/m), from CalcCableStrain at the point
 ///    (ε there is the interpolation's: in a stiff element it oscillates about the true strain);
 ///  - `tension` T (N), the elastic section force along the tangent recovered from the elements'
-///    resultant forces (CalcCableStationForces, CalcCableStationTension; docs/theory.md, "Tension
-///    recovery"), never below 0 in a tension-only cable. Kelvin–Voigt damping is not included.
+///    resultant forces (CalcCableStationForces, CalcCableElementTension; docs/theory.md, "Tension
+///    recovery"), never below 0 in a tension-only cable; along a beam cable the section's normal
+///    force N (docs/theory.md, "Tension of a beam"). Kelvin–Voigt damping is not included.
 ///  - `section_d2`, `section_d3`: the cross-section directors d₂ = r_y(ξ), d₃ = r_z(ξ) of a beam
 ///    cable, linear in ξ (elements/beam_shape.hpp), for glyphs of its section frame; zero for
 ///    cables and bodies.

@@ -162,8 +162,6 @@ Model ModelBuilder::Build() const {
     throw InputError(
         "modal damping needs the modes of the model, which free rigid bodies do not have; use "
         "Rayleigh damping or make the bodies fixed");
-  if (!model_.beam_elements_.empty() && model_.orbital_frame_)
-    throw InputError("ancf_beam cables are not available in an orbital (Hill) frame yet");
   Model model = model_;
   model.initial_positions_.conservativeResize(model.num_dofs_);
   model.initial_velocities_.conservativeResize(model.num_dofs_);

@@ -166,8 +166,8 @@ class ModelBuilder {
                           const Vector3d& center = Vector3d::Zero());
   /// Records a net's description (its knots, threads, perimeter); AddNet calls it.
   void AddNetDescription(const Net& net);
-  /// The finished model. Throws InputError when it has no cable, or when beams meet what they do
-  /// not support yet (an orbital frame).
+  /// The finished model. Throws InputError when it has no cable, or when rigid bodies meet what
+  /// they do not support yet (an orbital frame, modal damping of free bodies).
   Model Build() const;
 
  private:

@@ -103,8 +103,9 @@ Model MakeBodyModel() {
 
 // A mixed mesh: two cable elements (with Kelvin–Voigt damping), then two beam elements sharing
 // the cable's end node, with gravity, a point force and a distributed load on the beam and a
-// moment on its end node.
-Model MakeBeamModel() {
+// moment on its end node; in a fast-turning orbital frame when asked (n = 30 rad/s: n² ρI of the
+// sections' rotary inertia is not lost in the elastic stiffness).
+Model MakeBeamModel(bool orbital_frame = false) {
   const CableProperties properties =
       MakeCableProperties({.youngs_modulus = 1.0e8, .density = 1200.0}, MakeCircleSection(0.02));
   CableProperties damped = properties;
@@ -125,6 +126,7 @@ Model MakeBeamModel() {
   builder.AddPointForce({"b", 0.3}, Vector3d(1.0, -2.0, 3.0));
   builder.AddPointMoment({"b", 1.0}, Vector3d(0.5, 4.0, -1.0));
   builder.AddDistributedLoad("b", Vector3d(0.3, 0.0, 0.1));
+  if (orbital_frame) builder.SetOrbitalFrame(30.0);
   return builder.Build();
 }
 
@@ -201,6 +203,10 @@ TEST(Assembly, IterationMatrixWithBeamsMatchesFiniteDifferences) {
   ExpectIterationMatrixMatchesFiniteDifferences(model);
 }
 
+TEST(Assembly, IterationMatrixWithBeamsInAnOrbitalFrameMatchesFiniteDifferences) {
+  ExpectIterationMatrixMatchesFiniteDifferences(MakeBeamModel(/*orbital_frame=*/true));
+}
+
 TEST(Assembly, MomentOnABeamNodeDoesItsWorkOnARigidRotation) {
   // Q·δe = M·δθ for δe = δθ × a, a = r_x, d₂, d₃ (docs/theory.md, "Point moment on a beam node").
   const Model model = MakeBeamModel();
@@ -234,9 +240,8 @@ TEST(Assembly, BodyMassBlocksAreMassAndInertia) {
 }
 
 TEST(Assembly, InternalForcesOfIterationMatrixMatchForceOnlyPath) {
-  for (const Model& model :
-       {MakeLoadedModel(), MakeLinkedModel(), MakeLinkedModel(true), MakeBodyModel(),
-        MakeBeamModel()}) {
+  for (const Model& model : {MakeLoadedModel(), MakeLinkedModel(), MakeLinkedModel(true),
+                             MakeBodyModel(), MakeBeamModel(), MakeBeamModel(true)}) {
     const State state = MakePerturbedState(model);
     Workspace ws(model);
     const DofMap dofs = DofMap::FreeCoordinates(model);

@@ -188,12 +188,6 @@ TEST(BeamCable, WhatBeamsDoNotSupportIsRefused) {
         [&] { builder.AddCable(BeamAlongX("beam", 0.0, 1.0, Vector3d(2.0, 0.0, 0.0))); },
         "parallel");
   }
-  {
-    ModelBuilder builder;
-    builder.AddCable(BeamAlongX("beam", 0.0, 1.0, Vector3d::UnitZ()));
-    builder.SetOrbitalFrame(1e-3);
-    ExpectInputError([&] { builder.Build(); }, "orbital");
-  }
 }
 
 }  // namespace
