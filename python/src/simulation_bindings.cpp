@@ -1,4 +1,3 @@
-#include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl/filesystem.h>
 
@@ -6,6 +5,7 @@
 #include <memory>
 #include <utility>
 
+#include "array_view.hpp"
 #include "bindings.hpp"
 #include "results.hpp"
 #include "stepped_run.hpp"
@@ -15,14 +15,11 @@ namespace py = pybind11;
 namespace ancfnet::python {
 namespace {
 
-// A read-only numpy view of `vector`, whose storage the SteppedRun `owner` keeps.
-py::array_t<double> VectorView(const VectorXd& vector, const py::object& owner) {
-  py::array_t<double> view(static_cast<py::ssize_t>(vector.size()), vector.data(), owner);
-  view.attr("setflags")(py::arg("write") = false);
-  return view;
+// A read-only view of the vector `member` of the state of the SteppedRun `self`.
+py::array_t<double> StateView(const py::object& self, VectorXd State::*member) {
+  const VectorXd& vector = self.cast<const SteppedRun&>().state().*member;
+  return ReadOnlyView(vector.data(), vector.size(), self);
 }
-
-const State& StateOf(const py::object& self) { return self.cast<SteppedRun&>().state(); }
 
 }  // namespace
 
@@ -59,14 +56,14 @@ void BindSimulation(py::module_& m) {
           },
           "Runs the remaining steps and returns summary.json as a dict (see ancfnet.run).")
       .def_property_readonly(
-          "t", [](const py::object& self) { return StateOf(self).t; },
+          "t", [](const SteppedRun& run) { return run.state().t; },
           "Time of the current output step (s; the load factor of a static analysis).")
       .def_property_readonly(
-          "q", [](const py::object& self) { return VectorView(StateOf(self).q, self); },
+          "q", [](const py::object& self) { return StateView(self, &State::q); },
           "Generalised coordinates of every coordinate of the model, fixed ones included\n"
           "(positions in m, slopes dimensionless), as a read-only view.")
       .def_property_readonly(
-          "v", [](const py::object& self) { return VectorView(StateOf(self).v, self); },
+          "v", [](const py::object& self) { return StateView(self, &State::v); },
           "Generalised velocities v = dq/dt (m/s, 1/s), as a read-only view.")
       .def_property_readonly("finished", &SteppedRun::finished, "True once the run has ended.")
       .def_property_readonly(
