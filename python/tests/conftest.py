@@ -4,20 +4,11 @@ Run by CTest (test python.api) with PYTHONPATH set to the build's module directo
 to the command-line tool."""
 
 import os
-import pathlib
 import subprocess
 
 import pytest
 
-ROOT = pathlib.Path(__file__).resolve().parents[2]
-
-
-def short_scene(name, end_time):
-    """The text of examples/NAME.yaml with its end time cut to END_TIME (s)."""
-    text = (ROOT / "examples" / f"{name}.yaml").read_text()
-    lines = [f"  end_time: {end_time}" if line.startswith("  end_time:") else line
-             for line in text.splitlines()]
-    return "\n".join(lines) + "\n"
+from scenes import short_scene
 
 
 @pytest.fixture

@@ -3,7 +3,10 @@ bit, on the same scene."""
 
 import json
 
+import pytest
+
 import ancfnet
+from scenes import short_scene
 
 # Timings differ from run to run; every other key of summary.json must match.
 TIMINGS = ("wall_time_s", "output_time_s")
@@ -18,9 +21,10 @@ def summary_without_timings(summary):
     return {key: value for key, value in summary.items() if key not in TIMINGS}
 
 
-def test_run_writes_the_files_of_the_cli_bit_for_bit(tmp_path, pendulum_text, cli):
-    scene_file = tmp_path / "pendulum.yaml"
-    scene_file.write_text(pendulum_text)
+@pytest.mark.parametrize("name, end_time", [("pendulum", 0.1), ("cantilever_static", None)])
+def test_run_writes_the_files_of_the_cli_bit_for_bit(tmp_path, cli, name, end_time):
+    scene_file = tmp_path / f"{name}.yaml"
+    scene_file.write_text(short_scene(name, end_time))
     process = cli("run", scene_file, "-o", tmp_path / "cli", "-q")
     assert process.returncode == 0, process.stderr
 
@@ -71,3 +75,12 @@ def test_run_to_end_after_some_steps(tmp_path, pendulum_text):
     summary = simulation.run_to_end()
     assert summary_without_timings(summary) == summary_without_timings(reference)
     assert not simulation.advance()
+
+
+def test_dropping_a_simulation_abandons_its_run(tmp_path, pendulum_text):
+    simulation = ancfnet.Simulation(ancfnet.parse_scene(pendulum_text), tmp_path)
+    assert simulation.advance() and simulation.advance()
+    del simulation
+
+    assert len(ancfnet.read_probes(tmp_path / "probes.csv")["time"]) == 2
+    assert not (tmp_path / "summary.json").exists()
