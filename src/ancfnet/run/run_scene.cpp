@@ -161,6 +161,7 @@ RunSummary RunScene(const Scene& scene, const RunOptions& options) {
     writers.Write(s, energy);
     output_time += std::chrono::steady_clock::now() - start;
     progress.Update(s.t, writers.outputs());
+    if (options.on_output) options.on_output(s);
   };
   TimeLoopCheckpoints checkpoints{.every = options.checkpoint_every,
                                   .resume = resume ? &*resume : nullptr};

@@ -2,6 +2,7 @@
 /// @file Runs a scene: the analysis it asks for, with its outputs written into a directory.
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 
 #include "ancfnet/io/scene.hpp"
@@ -21,6 +22,10 @@ struct RunOptions {
   /// A checkpoint of this scene to continue from, appending to the outputs in output_dir that
   /// the run which wrote it left there. Empty: start at t = 0.
   std::filesystem::path restart;
+  /// Called with the state just written at each output step (t = 0 and every output time), after
+  /// its probe row and frames; it may throw to abandon the run, which then writes no summary.
+  /// Empty: none. The Python module steps a run through it.
+  std::function<void(const State&)> on_output;
 };
 
 /// Runs the analysis and writes into options.output_dir: probes.csv (one row per output step),
