@@ -87,7 +87,8 @@ TEST(ClearanceJointScene, ReadsLuGreFriction) {
       Replace(kJoints, "friction: {type: tanh, kinetic: 0.1}",
               "friction: {type: lugre, static: 0.4, kinetic: 0.3, stribeck_speed: 0.02,\n"
               "               bristle_stiffness: 2.0e4, bristle_damping: 80}");
-  const auto& friction = ParseScene(text).model.clearance_joints()[0].friction;
+  const Scene scene = ParseScene(text);
+  const auto& friction = scene.model.clearance_joints()[0].friction;
   ASSERT_TRUE(friction.has_value());
   EXPECT_EQ(friction->kind, FrictionLawKind::kLuGre);
   EXPECT_DOUBLE_EQ(friction->static_coefficient, 0.4);
