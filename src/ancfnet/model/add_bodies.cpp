@@ -98,12 +98,12 @@ Index ModelBuilder::AddRigidBody(const RigidBodySpec& spec) {
   return index;
 }
 
-double ModelBuilder::PointMassOf(const CablePointRef& point) const {
+ModelBuilder::HeldPoint ModelBuilder::HeldPointOf(const CablePointRef& point) const {
   const Index mass = model_.FindPointMass(point.cable);
-  if (mass >= 0) return model_.point_masses_[mass].mass;
+  if (mass >= 0) return {.mass = model_.point_masses_[mass].mass};
   const MaterialPoint at = model_.LocateCablePoint(model_.FindCable(point.cable), point.s);
   const CableElementParameters& p = model_.elements_[at.element].parameters;
-  return 0.5 * p.mass_per_length * p.length;
+  return {.mass = 0.5 * p.mass_per_length * p.length, .stiffness = p.axial_stiffness / p.length};
 }
 
 void ModelBuilder::AddBodyAttachment(const BodyAttachmentSpec& spec) {
@@ -121,7 +121,8 @@ void ModelBuilder::AddBodyAttachment(const BodyAttachmentSpec& spec) {
     attachment.body_point = body.initial_orientation.transpose() * (p0 - x0);
   }
   // The free body's mass takes part in the pair's reduced mass; a fixed one is infinitely heavy.
-  const double point_mass = PointMassOf(spec.point);
+  const HeldPoint held = HeldPointOf(spec.point);
+  const double point_mass = held.mass;
   const double body_mass =
       body.motion == BodyMotion::kFree ? body.mass : std::numeric_limits<double>::infinity();
   const double reduced =
@@ -138,7 +139,7 @@ void ModelBuilder::AddBodyAttachment(const BodyAttachmentSpec& spec) {
     if (!(reduced > 0.0))
       throw InputError(fmt::format(
           "attachment '{}': the point has no mass; give the stiffness explicitly", spec.name));
-    attachment.stiffness = CalcFixedAttachmentStiffness(reduced, spec.time_step);
+    attachment.stiffness = CalcFixedAttachmentStiffness(reduced, spec.time_step, held.stiffness);
   }
   if (spec.damping) {
     RequireNonNegative(*spec.damping, "attachment damping");
