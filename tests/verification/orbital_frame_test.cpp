@@ -186,7 +186,7 @@ struct InertialAttitude {
 InertialAttitude EulerRate(const InertialAttitude& x, const Matrix3d& inertia, double t) {
   const Vector3d radial =
       x.rotation.transpose() *
-      (Eigen::AngleAxisd(kMeanMotion * t, Vector3d::UnitZ()) * Vector3d::UnitX());
+      (Matrix3d(Eigen::AngleAxisd(kMeanMotion * t, Vector3d::UnitZ())) * Vector3d::UnitX());
   const Vector3d torque = 3.0 * kMeanMotion * kMeanMotion * radial.cross(inertia * radial);
   return {x.rotation * Skew(x.rate), inertia.inverse() * (torque - x.rate.cross(inertia * x.rate))};
 }
