@@ -137,7 +137,9 @@ TEST_P(SlackPendulum, GoesSlackAndTautWithDefaultSettings) {
   EXPECT_LT(run.min_distance, 0.9);        // slack
   EXPECT_GT(run.max_distance, 1.0);        // taut
   const double scale = run.first.kinetic;  // 8 J
-  if (GetParam() == "midpoint") EXPECT_LT(run.max_drift, 1e-3 * scale);
+  if (GetParam() == "midpoint") {
+    EXPECT_LT(run.max_drift, 1e-3 * scale);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Integrators, SlackPendulum,
