@@ -15,6 +15,18 @@
 #include "ancfnet/model/rigid_body_kinematics.hpp"
 
 namespace ancfnet {
+namespace {
+
+// The stiffness that holds a located point: its cable element's axial stiffness EA/L_e, or 0 for
+// a point mass (CalcFixedAttachmentStiffness).
+double HeldStiffness(const Model& model, const CablePointRef& point) {
+  if (model.FindPointMass(point.cable) >= 0) return 0.0;
+  const MaterialPoint at = model.LocateCablePoint(model.FindCable(point.cable), point.s);
+  const CableElementParameters& p = model.elements()[at.element].parameters;
+  return p.axial_stiffness / p.length;
+}
+
+}  // namespace
 
 Index ModelBuilder::AddPointMass(const std::string& name, double mass, const Vector3d& position,
                                  const Vector3d& velocity) {
@@ -98,12 +110,12 @@ Index ModelBuilder::AddRigidBody(const RigidBodySpec& spec) {
   return index;
 }
 
-ModelBuilder::HeldPoint ModelBuilder::HeldPointOf(const CablePointRef& point) const {
+double ModelBuilder::PointMassOf(const CablePointRef& point) const {
   const Index mass = model_.FindPointMass(point.cable);
-  if (mass >= 0) return {.mass = model_.point_masses_[mass].mass};
+  if (mass >= 0) return model_.point_masses_[mass].mass;
   const MaterialPoint at = model_.LocateCablePoint(model_.FindCable(point.cable), point.s);
   const CableElementParameters& p = model_.elements_[at.element].parameters;
-  return {.mass = 0.5 * p.mass_per_length * p.length, .stiffness = p.axial_stiffness / p.length};
+  return 0.5 * p.mass_per_length * p.length;
 }
 
 void ModelBuilder::AddBodyAttachment(const BodyAttachmentSpec& spec) {
@@ -121,8 +133,7 @@ void ModelBuilder::AddBodyAttachment(const BodyAttachmentSpec& spec) {
     attachment.body_point = body.initial_orientation.transpose() * (p0 - x0);
   }
   // The free body's mass takes part in the pair's reduced mass; a fixed one is infinitely heavy.
-  const HeldPoint held = HeldPointOf(spec.point);
-  const double point_mass = held.mass;
+  const double point_mass = PointMassOf(spec.point);
   const double body_mass =
       body.motion == BodyMotion::kFree ? body.mass : std::numeric_limits<double>::infinity();
   const double reduced =
@@ -139,7 +150,8 @@ void ModelBuilder::AddBodyAttachment(const BodyAttachmentSpec& spec) {
     if (!(reduced > 0.0))
       throw InputError(fmt::format(
           "attachment '{}': the point has no mass; give the stiffness explicitly", spec.name));
-    attachment.stiffness = CalcFixedAttachmentStiffness(reduced, spec.time_step, held.stiffness);
+    attachment.stiffness =
+        CalcFixedAttachmentStiffness(reduced, spec.time_step, HeldStiffness(model_, spec.point));
   }
   if (spec.damping) {
     RequireNonNegative(*spec.damping, "attachment damping");

@@ -69,7 +69,7 @@ struct BodyAttachmentSpec {
   /// s_B (m, body frame); default: where the point is at t = 0, R_WBᵀ (p₀ − x_WB).
   std::optional<Vector3d> body_point = std::nullopt;
   /// k (N/m, > 0); default: the stiff penalty of a fixed attachment,
-  /// CalcFixedAttachmentStiffness from the masses, `time_step` and the holding element.
+  /// CalcFixedAttachmentStiffness from the masses and `time_step`.
   std::optional<double> stiffness = std::nullopt;
   /// c (N s/m, ≥ 0); default: 2 √(k m_eff) (critical for the pair) with the default stiffness,
   /// else 0.
@@ -177,13 +177,8 @@ class ModelBuilder {
   void CheckNameIsFree(const std::string& name) const;
   // Throws InputError when a clearance or ideal joint is already named `name`.
   void CheckJointNameIsFree(const std::string& name) const;
-  // What moves with a located point and what holds it: a point mass's mass (stiffness 0), or half
-  // its cable element's mass and the element's axial stiffness EA/L_e.
-  struct HeldPoint {
-    double mass = 0.0;       // kg
-    double stiffness = 0.0;  // N/m
-  };
-  HeldPoint HeldPointOf(const CablePointRef& point) const;
+  // The mass that moves with a located point: a point mass's, or half its cable element's.
+  double PointMassOf(const CablePointRef& point) const;
   // Appends n coordinates with these initial values, free and at rest; returns the first.
   Index AddCoordinates(const VectorXd& initial_values);
   // Position coordinates of a cable end: the named knot's, or new ones at `position`.
