@@ -185,7 +185,7 @@ void AssembleIterationMatrix(const Model& model, const VectorXd& q, const Vector
   AddClearanceJointForces(model, q, v, ws);
   AddClearanceJointJacobians(model, q, v, weights, ws, matrix);
   AddOrbitalFrameForces(model, q, v, ws);
-  AddOrbitalFrameJacobians(model, ws, weights.stiffness, weights.damping, matrix);
+  AddOrbitalFrameJacobians(model, q, v, ws, weights.stiffness, weights.damping, matrix);
   if (weights.mass != 0.0) {
     AddPointMassMatrix(model, weights.mass, matrix);
     AddBodyMassMatrix(model, weights.mass, matrix);

@@ -1,5 +1,7 @@
 #include "ancfnet/forces/orbital_frame.hpp"
 
+#include "ancfnet/forces/orbital_frame_body.hpp"
+
 namespace ancfnet {
 namespace {
 
@@ -58,10 +60,20 @@ void AddOrbitalFrameForces(const Model& model, const VectorXd& q, const VectorXd
   for (const PointMass& point : model.point_masses())
     ws.internal_force.segment<3>(point.dof) -=
         point.mass * (k * q.segment<3>(point.dof) + g * v.segment<3>(point.dof));
+  const auto& bodies = model.rigid_bodies();
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    if (bodies[b].motion != BodyMotion::kFree) continue;
+    const HillBodyTerms t = CalcHillBodyTerms(
+        bodies[b].mass, bodies[b].inertia, CalcBodyPose(bodies[b], q, ws.body_rotation[b]),
+        CalcBodyVelocity(bodies[b], v), *model.orbital_frame());
+    ws.internal_force.segment<3>(bodies[b].position_dof()) += t.force;
+    ws.internal_force.segment<3>(bodies[b].rotation_dof()) += t.moment;
+  }
 }
 
-void AddOrbitalFrameJacobians(const Model& model, const Workspace& ws, double stiffness_weight,
-                              double damping_weight, SystemMatrix* matrix) {
+void AddOrbitalFrameJacobians(const Model& model, const VectorXd& q, const VectorXd& v,
+                              const Workspace& ws, double stiffness_weight, double damping_weight,
+                              SystemMatrix* matrix) {
   if (!model.orbital_frame()) return;
   const Matrix3d k = CalcHillStiffness(*model.orbital_frame());
   const Matrix3d g = CalcHillGyroscopic(*model.orbital_frame());
@@ -75,6 +87,17 @@ void AddOrbitalFrameJacobians(const Model& model, const Workspace& ws, double st
   const auto& points = model.point_masses();
   for (std::size_t i = 0; i < points.size(); ++i)
     matrix->AddPointMassBlock(static_cast<Index>(i), field, -points[i].mass);
+  const auto& bodies = model.rigid_bodies();
+  for (std::size_t b = 0; b < bodies.size(); ++b) {
+    if (bodies[b].motion != BodyMotion::kFree) continue;
+    const HillBodyTerms t = CalcHillBodyTerms(
+        bodies[b].mass, bodies[b].inertia, CalcBodyPose(bodies[b], q, ws.body_rotation[b]),
+        CalcBodyVelocity(bodies[b], v), *model.orbital_frame());
+    const Index body = static_cast<Index>(b);
+    matrix->AddBodyBlock(body, 0, 0, field, -bodies[b].mass);
+    matrix->AddBodyBlock(body, 1, 1,
+                         stiffness_weight * t.moment_rotation + damping_weight * t.moment_rate);
+  }
 }
 
 double CalcOrbitalPotential(const Model& model, const Workspace& ws, const VectorXd& q) {
@@ -93,6 +116,12 @@ double CalcOrbitalPotential(const Model& model, const Workspace& ws, const Vecto
   }
   for (const PointMass& point : model.point_masses())
     potential -= 0.5 * point.mass * q.segment<3>(point.dof).dot(k * q.segment<3>(point.dof));
+  const auto& bodies = model.rigid_bodies();
+  for (std::size_t b = 0; b < bodies.size(); ++b)
+    if (bodies[b].motion == BodyMotion::kFree)
+      potential += CalcHillBodyPotential(bodies[b].mass, bodies[b].inertia,
+                                         CalcBodyPose(bodies[b], q, ws.body_rotation[b]),
+                                         *model.orbital_frame());
   return potential;
 }
 

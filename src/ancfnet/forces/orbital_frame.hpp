@@ -10,7 +10,9 @@
 /// r + y d₂ + z d₃, it is likewise its full mass matrix times (I₈ ⊗ K) e + (I₈ ⊗ G) ė: the centre
 /// line's part, as on a cable, plus the rotary part (Workspace::beam_rotary_mass) on d₂, d₃,
 /// which holds the gravity-gradient torque and the Coriolis forces of the sections' spin
-/// (docs/theory.md, "Beams in an orbital frame").
+/// (docs/theory.md, "Beams in an orbital frame"). On a free rigid body, the same field on its
+/// centre of mass and the gravity-gradient and frame-rate terms of its rotation
+/// (forces/orbital_frame_body.hpp).
 ///
 /// Energy: the Coriolis part does no work (M ⊗ G is skew), and the tidal part derives from the
 /// potential V = −½ qᵀ M (I ⊗ K) q, which the energy account adds to the gravity column (the
@@ -32,11 +34,13 @@ Matrix3d CalcHillGyroscopic(double mean_motion);
 void AddOrbitalFrameForces(const Model& model, const VectorXd& q, const VectorXd& v,
                            Workspace& ws);
 
-/// Adds −c_K M (I ⊗ K) − c_C M (I ⊗ G) to the iteration matrix.
-void AddOrbitalFrameJacobians(const Model& model, const Workspace& ws, double stiffness_weight,
-                              double damping_weight, SystemMatrix* matrix);
+/// Adds −c_K M (I ⊗ K) − c_C M (I ⊗ G) to the iteration matrix, and the free bodies' terms at
+/// (q, v) with the reference rotations in ws.
+void AddOrbitalFrameJacobians(const Model& model, const VectorXd& q, const VectorXd& v,
+                              const Workspace& ws, double stiffness_weight, double damping_weight,
+                              SystemMatrix* matrix);
 
-/// V = −½ qᵀ M (I ⊗ K) q (J).
+/// V = −½ qᵀ M (I ⊗ K) q plus the free bodies' potentials (forces/orbital_frame_body.hpp) (J).
 double CalcOrbitalPotential(const Model& model, const Workspace& ws, const VectorXd& q);
 
 }  // namespace ancfnet

@@ -156,8 +156,6 @@ void ModelBuilder::AddNetDescription(const Net& net) {
 Model ModelBuilder::Build() const {
   if (model_.cables_.empty() && model_.point_masses_.empty() && model_.rigid_bodies_.empty())
     throw InputError("the model has no cable, no point mass and no rigid body");
-  if (model_.orbital_frame_ && !model_.rigid_bodies_.empty())
-    throw InputError("rigid bodies are not available in an orbital (Hill) frame yet");
   if (model_.damping_.modal.num_modes > 0 && model_.has_free_bodies())
     throw InputError(
         "modal damping needs the modes of the model, which free rigid bodies do not have; use "

@@ -59,7 +59,7 @@ Model MakeLinkedModel(bool orbital_frame = false) {
 
 // Free and fixed rigid bodies, turned, with attachments to a cable point (through the Hermite
 // weights), to a point mass, and from a point mass to the fixed body, and a gyroscopic spin.
-Model MakeBodyModel() {
+Model MakeBodyModel(bool orbital_frame = false) {
   const CableProperties properties =
       MakeCableProperties({.youngs_modulus = 1.0e8, .density = 1200.0}, MakeCircleSection(0.02));
   ModelBuilder builder;
@@ -98,6 +98,8 @@ Model MakeBodyModel() {
                              .point = {"a", 0.0},
                              .stiffness = 500.0,
                              .damping = 1.0});
+  // Large n: the gravity-gradient and frame-rate terms of the tumbling target must not vanish.
+  if (orbital_frame) builder.SetOrbitalFrame(1.3);
   return builder.Build();
 }
 
@@ -195,6 +197,10 @@ TEST(Assembly, IterationMatrixInAnOrbitalFrameMatchesFiniteDifferences) {
 
 TEST(Assembly, IterationMatrixWithRigidBodiesMatchesFiniteDifferences) {
   ExpectIterationMatrixMatchesFiniteDifferences(MakeBodyModel());
+}
+
+TEST(Assembly, IterationMatrixWithRigidBodiesInAnOrbitalFrameMatchesFiniteDifferences) {
+  ExpectIterationMatrixMatchesFiniteDifferences(MakeBodyModel(/*orbital_frame=*/true));
 }
 
 TEST(Assembly, IterationMatrixWithBeamsMatchesFiniteDifferences) {
