@@ -15,18 +15,6 @@
 #include "ancfnet/model/rigid_body_kinematics.hpp"
 
 namespace ancfnet {
-namespace {
-
-// The stiffness that holds a located point: its cable element's axial stiffness EA/L_e, or 0 for
-// a point mass (CalcFixedAttachmentStiffness).
-double HeldStiffness(const Model& model, const CablePointRef& point) {
-  if (model.FindPointMass(point.cable) >= 0) return 0.0;
-  const MaterialPoint at = model.LocateCablePoint(model.FindCable(point.cable), point.s);
-  const CableElementParameters& p = model.elements()[at.element].parameters;
-  return p.axial_stiffness / p.length;
-}
-
-}  // namespace
 
 Index ModelBuilder::AddPointMass(const std::string& name, double mass, const Vector3d& position,
                                  const Vector3d& velocity) {
@@ -150,8 +138,7 @@ void ModelBuilder::AddBodyAttachment(const BodyAttachmentSpec& spec) {
     if (!(reduced > 0.0))
       throw InputError(fmt::format(
           "attachment '{}': the point has no mass; give the stiffness explicitly", spec.name));
-    attachment.stiffness =
-        CalcFixedAttachmentStiffness(reduced, spec.time_step, HeldStiffness(model_, spec.point));
+    attachment.stiffness = CalcFixedAttachmentStiffness(reduced, spec.time_step);
   }
   if (spec.damping) {
     RequireNonNegative(*spec.damping, "attachment damping");

@@ -66,13 +66,7 @@ TEST(BodyAttachment, ForcesBalanceAndEnergyIsHalfKDSquared) {
 }
 
 TEST(BodyAttachment, FixedStiffnessIsReducedMassTimesTenOverStepSquared) {
-  EXPECT_DOUBLE_EQ(CalcFixedAttachmentStiffness(2.0, 1e-3, 0.0), 2.0e8);
-  EXPECT_DOUBLE_EQ(CalcFixedAttachmentStiffness(2.0, 1e-3, 1.0e6), 2.0e8);
-}
-
-TEST(BodyAttachment, FixedStiffnessIsAHundredTimesAStifferHold) {
-  // A light, stiff element (EA/L_e = 10⁷ N/m) beside 2 kg at h = 10⁻³ s (2·10⁸ N/m).
-  EXPECT_DOUBLE_EQ(CalcFixedAttachmentStiffness(2.0, 1e-3, 1.0e7), 1.0e9);
+  EXPECT_DOUBLE_EQ(CalcFixedAttachmentStiffness(2.0, 1e-3), 2.0e8);
 }
 
 TEST(GyroscopicForce, JacobianMatchesFiniteDifferences) {
