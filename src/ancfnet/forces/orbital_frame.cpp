@@ -41,22 +41,20 @@ void AddOrbitalFrameForces(const Model& model, const VectorXd& q, const VectorXd
   if (!model.orbital_frame()) return;
   const Matrix3d k = CalcHillStiffness(*model.orbital_frame());
   const Matrix3d g = CalcHillGyroscopic(*model.orbital_frame());
+  // −M (K̃ e + G̃ ė) of one element with mass matrix `mass`.
+  const auto subtract_field = [&](const auto& element, const auto& mass) {
+    const auto accel =
+        (ApplyToBlocks(k, model.Gather(element, q)) + ApplyToBlocks(g, model.Gather(element, v)))
+            .eval();
+    const auto force = (mass * accel).eval();
+    for (Index i = 0; i < force.size(); ++i) ws.internal_force[element.dofs[i]] -= force[i];
+  };
   const auto& elements = model.elements();
-  for (std::size_t e = 0; e < elements.size(); ++e) {
-    const Vector12d accel =
-        ApplyToBlocks(k, model.Gather(elements[e], q)) + ApplyToBlocks(g, model.Gather(elements[e], v));
-    const Vector12d force = ws.element_mass[e] * accel;
-    for (int i = 0; i < kCableElementDofs; ++i) ws.internal_force[elements[e].dofs[i]] -= force[i];
-  }
+  for (std::size_t e = 0; e < elements.size(); ++e) subtract_field(elements[e], ws.element_mass[e]);
   // The sections' rotary inertia: the field on y d₂ + z d₃ (docs/theory.md, "Beams in an
   // orbital frame").
   const auto& beams = model.beam_elements();
-  for (std::size_t b = 0; b < beams.size(); ++b) {
-    const Vector24d accel =
-        ApplyToBlocks(k, model.Gather(beams[b], q)) + ApplyToBlocks(g, model.Gather(beams[b], v));
-    const Vector24d force = ws.beam_rotary_mass[b] * accel;
-    for (int i = 0; i < kBeamElementDofs; ++i) ws.internal_force[beams[b].dofs[i]] -= force[i];
-  }
+  for (std::size_t b = 0; b < beams.size(); ++b) subtract_field(beams[b], ws.beam_rotary_mass[b]);
   for (const PointMass& point : model.point_masses())
     ws.internal_force.segment<3>(point.dof) -=
         point.mass * (k * q.segment<3>(point.dof) + g * v.segment<3>(point.dof));
