@@ -80,7 +80,9 @@ SelfContact::PairState SelfContact::CalcPair(const Candidate& c, const VectorXd&
   const ContactSpec& spec = model_.contact();
   r.force = CalcContactPairForce(spec.normal, spec.friction, k, c.history.speed, c.history.bristle,
                                  step_, detail == PairDetail::kJacobian);
-  if (detail != PairDetail::kJacobian || !r.force.touching) return r;
+  // A pair apart at q still needs the geometry of its Jacobian for the discrete gradient of a
+  // step whose start or end touches (CalcStepPair).
+  if (detail != PairDetail::kJacobian) return r;
   // A closest point inside its axis moves with the coordinates (not for parallel axes, whose
   // closest pair is not unique).
   const auto side = [&](const SelfContactPrimitive& p, const Axis& axis, double parameter,
@@ -201,9 +203,14 @@ SelfContact::PairState SelfContact::CalcStepPair(const Candidate& c, const Vecto
   // CalcElasticStepForce's least displacement: 10⁻⁶ of the radii, as for targets.
   const double least = 1e-6 * (primitives_[c.a].radius + primitives_[c.b].radius);
   pair.force.force += CalcElasticStepForce(law, start, end, pair.direction, d, least) - elastic;
-  if (jacobian && pair.force.touching) {
-    const double slope = 2.0 * CalcElasticStepMagnitude(law, start, end).dforce_dend -
-                         law.Evaluate(pair.force.penetration, 0.0, 1.0).dforce_ddelta;
+  pair.step_force = pair.counted && (start > 0.0 || end > 0.0);
+  if (jacobian && (pair.step_force || pair.force.touching)) {
+    // Also where the pair is apart at the midpoint but touches at an end of the step: without
+    // this slope its force would have no Jacobian, and Newton would cycle as the end of the
+    // step touches at one iterate and not at the next (issue 17).
+    const double slope =
+        2.0 * CalcElasticStepMagnitude(law, start, end).dforce_dend -
+        (pair.force.touching ? law.Evaluate(pair.force.penetration, 0.0, 1.0).dforce_ddelta : 0.0);
     pair.force.dforce_dx -= slope * pair.direction * pair.direction.transpose();
   }
   return pair;
@@ -230,7 +237,7 @@ void SelfContact::AddJacobian(const VectorXd& q, const VectorXd& v, const Iterat
     double energy = 0.0;
     const PairState pair = step_end_ ? CalcStepPair(c, q, v, true, &energy)
                                      : CalcPair(c, q, v, PairDetail::kJacobian);
-    if (!pair.force.touching) continue;
+    if (!pair.force.touching && !pair.step_force) continue;
     const Matrix24d jacobian = CalcSelfPairJacobian(pair.side_a, pair.side_b, pair.separation,
                                                     pair.force, weights.stiffness, weights.damping);
     const SelfContactPrimitive& pa = primitives_[c.a];

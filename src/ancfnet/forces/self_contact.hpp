@@ -64,10 +64,12 @@ class SelfContact {
   /// the touching candidate pairs at (q, v). After SetStep, (q, v) is the step's midpoint and
   /// the pairs touching at either end of the step count too.
   void AddForces(const VectorXd& q, const VectorXd& v, Workspace& ws) const;
-  /// matrix += c_K ∂Q/∂q + c_C ∂Q/∂q̇ of the touching candidates, complete (CalcSelfPairJacobian:
-  /// the closest points moving with the coordinates, friction's tangent plane turning): into the
-  /// contact coupling of a coupled pair (coupled_owners() must have been added to `matrix`), and
-  /// for the others (or without the coupling) only the blocks of each primitive with itself, or
+  /// matrix += c_K ∂Q/∂q + c_C ∂Q/∂q̇ of the touching candidates (after SetStep also those
+  /// touching at either end of the step only, whose discrete gradient acts), complete
+  /// (CalcSelfPairJacobian: the closest points moving with the coordinates, friction's tangent
+  /// plane turning; in a step, the turning of the discrete gradient's direction left out): into
+  /// the contact coupling of a coupled pair (coupled_owners() must have been added to `matrix`),
+  /// and for the others (or without the coupling) only the blocks of each primitive with itself, or
   /// all of them when both lie on one element (a quasi-Newton matrix for a pair that was apart at
   /// the step start; the residual stays exact).
   void AddJacobian(const VectorXd& q, const VectorXd& v, const IterationWeights& weights,
@@ -109,6 +111,9 @@ class SelfContact {
   struct PairState {
     double s = 0.0, t = 0.0, gap = 0.0;
     bool counted = true;  // the pair's closest points are not counted by a neighbour
+    // CalcStepPair: the discrete gradient over the step acts (the pair touches at its start or
+    // end), whether or not it touches at the midpoint.
+    bool step_force = false;
     Vector3d direction = Vector3d::UnitZ();
     Vector3d velocity = Vector3d::Zero();
     ContactPairForce force;

@@ -248,6 +248,50 @@ TEST(SelfContact, CouplesOnlyThePairsThatTouchOrNearlyTouch) {
   for (const auto& [a, b] : contact.coupled_owners()) EXPECT_NE(a < 2, b < 2);  // a's with b's
 }
 
+// A step of the energy-consistent midpoint rule (SetStep) in which thread b and the bead start
+// 0.5 mm above thread a, are apart from it at the midpoint and press into it at the end: the
+// pairs' forces are the discrete gradients over the step, which the end of the step, moving
+// twice as far as the midpoint, sets. Their Jacobian with respect to the midpoint must be there
+// (without it Newton cycled as the end touched at one iterate and not at the next, issue 17),
+// and it matches central differences up to the turning of the direction n̄ of the discrete
+// gradient, which it leaves out.
+TEST(SelfContact, StepJacobianWhereOnlyTheEndOfTheStepTouchesMatchesFiniteDifferences) {
+  const Model model = MakeCrossingCables(std::nullopt, false);
+  SelfContact contact(model);
+  const VectorXd q_end = MakeInitialState(model).q;
+  State start = MakeInitialState(model);
+  const auto lift = [&](Index dof) { start.q[dof + 2] += 0.0008; };
+  const Cable& b = model.cables()[1];
+  for (Index node = b.first_node; node <= b.first_node + b.num_elements; ++node)
+    lift(model.NodePositionDof(node));
+  lift(model.point_masses()[0].dof);
+  contact.FindCandidates(start, 1e-3);
+  ASSERT_FALSE(contact.coupled_owners().empty());
+  VectorXd end = q_end;
+  contact.SetStep(start.q, &end);
+  const VectorXd mid = 0.5 * (start.q + q_end);
+  const VectorXd v = VectorXd::Zero(model.num_dofs());
+  const auto forces = [&](const VectorXd& q, const VectorXd& /*v*/) {
+    end = 2.0 * q - start.q;  // e₁ = 2 e_m − e₀
+    Workspace ws(model);
+    ws.internal_force.setZero();
+    ws.viscous_force.setZero();
+    contact.AddForces(q, v, ws);
+    return VectorXd(ws.internal_force);
+  };
+  ASSERT_GT(forces(mid, v).norm(), 1.0);  // the end of the step touches
+  const MatrixXd fd = test::CalcCentralDifferenceJacobian(forces, mid, v, true, 1e-9);
+  end = 2.0 * mid - start.q;
+  const DofMap all = DofMap::AllCoordinates(model);
+  SystemMatrix matrix(model, all);
+  matrix.AddContactCouplings(contact.coupled_owners());
+  matrix.SetZero();
+  contact.AddJacobian(mid, v, {.mass = 0, .damping = 0, .stiffness = 1}, &matrix);
+  const double error = (MatrixXd(matrix.matrix()) - fd).norm() / fd.norm();
+  std::printf("self-contact step Jacobian, apart at the midpoint: relative error %.2e\n", error);
+  EXPECT_LT(error, 0.05);
+}
+
 // Without its contact coupling a touching pair adds only each primitive's blocks with itself:
 // the full Jacobian on the entries of the uncoupled pattern (the owners' own groups; a and b and
 // the bead share no element), nothing elsewhere.
