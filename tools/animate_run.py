@@ -2,11 +2,12 @@
 """An animation of a run's net and bodies, for people without ParaView.
 
 Usage: /usr/bin/python3 tools/animate_run.py RUN_DIR [-o FILE] [--fps N] [--every K]
-       [--view front|side|top|oblique]          (or `ancfnet animate RUN_DIR ...`)
+       [--view front|side|top|oblique] [--scene SCENE]   (or `ancfnet animate RUN_DIR ...`)
 
 Reads the frames of RUN_DIR/cables.pvd (the net's threads and the bodies' axes at each output)
 and writes one movie frame per K-th output, the camera fixed and the scales equal and fixed over
-the whole run. FILE's suffix picks the format: .mp4 through Debian's ffmpeg (matplotlib's
+the whole run; with --scene, the outlines of the scene's contact targets move with their bodies
+(target_shapes.py). FILE's suffix picks the format: .mp4 through Debian's ffmpeg (matplotlib's
 FFMpegWriter), .gif through Pillow (matplotlib's PillowWriter). The default is RUN_DIR/animation.mp4
 when ffmpeg is installed, else RUN_DIR/animation.gif. Exit code 2 for a missing run folder, a
 missing or empty cables.pvd, or an .mp4 without ffmpeg.
@@ -23,7 +24,8 @@ import matplotlib.pyplot as plt  # noqa: E402 (the backend is chosen first)
 from matplotlib import animation  # noqa: E402
 
 from net_view import VIEWS, bounding_cube, draw_frame, prepare_axes  # noqa: E402
-from run_folder import RunDataError, exit_on_run_data_error  # noqa: E402
+from run_folder import RunDataError, exit_on_run_data_error, warn  # noqa: E402
+from target_shapes import read_target_outlines  # noqa: E402
 from vtk_frames import read_frames  # noqa: E402
 
 
@@ -44,16 +46,17 @@ def movie_writer(output, fps):
     raise RunDataError(f"{output}: unknown movie format '{suffix}' (use .mp4 or .gif)")
 
 
-def make_animation(frames, view="oblique", fps=10):
-    """(figure, FuncAnimation) showing `frames` one after the other."""
+def make_animation(frames, view="oblique", fps=10, outlines=()):
+    """(figure, FuncAnimation) showing `frames` one after the other, with the targets'
+    `outlines` (target_shapes.py)."""
     figure = plt.figure(figsize=(7, 7))
     axes = figure.add_subplot(projection="3d")
-    cube = bounding_cube(frames)
+    cube = bounding_cube(frames, outlines)
 
     def show(index):
         axes.clear()
         prepare_axes(axes, cube, view)
-        artists = draw_frame(axes, frames[index])
+        artists = draw_frame(axes, frames[index], outlines)
         axes.set_title(f"t = {frames[index].time:.4g} s ({view} view)")
         axes.legend(loc="upper left", fontsize="x-small")
         return artists
@@ -75,6 +78,8 @@ def main():
                         help="one movie frame per K outputs (default 1)")
     parser.add_argument("--view", choices=sorted(VIEWS), default="oblique",
                         help="camera (default oblique)")
+    parser.add_argument("--scene", type=Path, metavar="SCENE",
+                        help="the run's scene file: draw its contact targets")
     args = parser.parse_args()
     if args.every < 1 or args.fps <= 0:
         parser.error("--every must be ≥ 1 and --fps > 0")
@@ -85,7 +90,8 @@ def main():
         output = args.output or args.run_dir / default
         writer = movie_writer(output, args.fps)
         output.parent.mkdir(parents=True, exist_ok=True)
-        figure, movie = make_animation(frames, args.view, args.fps)
+        outlines = read_target_outlines(args.scene, warn) if args.scene else ()
+        figure, movie = make_animation(frames, args.view, args.fps, outlines)
         movie.save(output, writer=writer, dpi=100)
         plt.close(figure)
         print(f"{output}: {len(frames)} frames")

@@ -1,14 +1,15 @@
 #!/usr/bin/env python3
 """A one-page report of a capture run: snapshots of the net, energy, contact, tension, rates.
 
-Usage: /usr/bin/python3 tools/capture_report.py RUN_DIR [--times T ...] [-o FILE] [--pdf]
-       (or `ancfnet report RUN_DIR ...`)
+Usage: /usr/bin/python3 tools/capture_report.py RUN_DIR [--times T ...] [--scene SCENE]
+       [-o FILE] [--pdf]                      (or `ancfnet report RUN_DIR ...`)
 
 Reads the output folder of `ancfnet run` (probes.csv and the frames of cables.pvd) and writes one
 page (default RUN_DIR/report.png; --pdf adds the same page as a PDF beside it):
   - the net and the bodies' axes at three chosen times (--times, default the first, middle and
     last output; each time is taken from the nearest output), each seen from the front (x-z),
-    the side (y-z) and the top (x-y), on equal scales;
+    the side (y-z) and the top (x-y), on equal scales; with --scene, the outlines of the scene's
+    contact targets too (target_shapes.py);
   - the energy balance (energy probe: each term and kinetic + strain + gravity + dissipated -
     work), in J;
   - the contact forces (Σ F_n of each contact probe), in N;
@@ -32,7 +33,8 @@ import numpy as np  # noqa: E402
 from net_view import bounding_cube, draw_frame, prepare_axes  # noqa: E402
 from plot_probes import draw_panel  # noqa: E402
 from probe_quantities import Curve, Panel, describe, probe_kind, probe_panels  # noqa: E402
-from run_folder import RunDataError, exit_on_run_data_error, read_run_probes  # noqa: E402
+from run_folder import RunDataError, exit_on_run_data_error, read_run_probes, warn  # noqa: E402
+from target_shapes import read_target_outlines  # noqa: E402
 from vtk_frames import read_collection, read_frames  # noqa: E402
 
 SNAPSHOT_VIEWS = ("front", "side", "top")
@@ -91,8 +93,9 @@ def draw_time_panel(axes, time, panel, missing):
     axes.text(0.5, 0.5, missing, ha="center", va="center", transform=axes.transAxes)
 
 
-def make_report(run_dir, times=None):
-    """The report's Figure for the run in `run_dir` at the output times nearest `times`."""
+def make_report(run_dir, times=None, outlines=()):
+    """The report's Figure for the run in `run_dir` at the output times nearest `times`, the
+    targets' `outlines` (target_shapes.py) drawn in the snapshots."""
     run_dir = Path(run_dir)
     time, probes = read_run_probes(run_dir)
     stored = [t for t, _ in read_collection(run_dir / "cables.pvd")]
@@ -100,12 +103,12 @@ def make_report(run_dir, times=None):
     figure = plt.figure(figsize=PAGE_SIZE_IN, layout="constrained")
     grid = figure.add_gridspec(len(frames) + 2, len(SNAPSHOT_VIEWS),
                                height_ratios=[1.0] * len(frames) + [0.8, 0.8])
-    cube = bounding_cube(frames)
+    cube = bounding_cube(frames, outlines)
     for row, frame in enumerate(frames):
         for column, view in enumerate(SNAPSHOT_VIEWS):
             axes = figure.add_subplot(grid[row, column], projection="3d")
             prepare_axes(axes, cube, view)
-            draw_frame(axes, frame, label=(row, column) == (0, 0))
+            draw_frame(axes, frame, outlines, label=(row, column) == (0, 0))
             axes.set_title(f"{view} view, t = {frame.time:.4g} s", fontsize="small")
             if (row, column) == (0, 0):
                 axes.legend(loc="upper left", fontsize="x-small")
@@ -135,13 +138,16 @@ def main():
     parser.add_argument("run_dir", type=Path, metavar="RUN_DIR", help="output folder of a run")
     parser.add_argument("--times", type=float, nargs="+", metavar="T",
                         help="times of the snapshots, s (default: first, middle, last output)")
+    parser.add_argument("--scene", type=Path, metavar="SCENE",
+                        help="the run's scene file: draw its contact targets in the snapshots")
     parser.add_argument("-o", "--output", type=Path, metavar="FILE",
                         help="the page, PNG or PDF by its suffix (default: RUN_DIR/report.png)")
     parser.add_argument("--pdf", action="store_true", help="also write the page as a PDF")
     args = parser.parse_args()
 
     def run():
-        figure = make_report(args.run_dir, args.times)
+        outlines = read_target_outlines(args.scene, warn) if args.scene else ()
+        figure = make_report(args.run_dir, args.times, outlines)
         output = args.output or args.run_dir / "report.png"
         outputs = [output] + ([output.with_suffix(".pdf")] if args.pdf else [])
         for path in dict.fromkeys(outputs):

@@ -13,12 +13,16 @@ VIEWS = {
     "oblique": (25, -60, None),
 }
 THREAD_COLOR = "tab:blue"
+TARGET_COLORS = ("0.35", "tab:brown", "tab:purple", "tab:olive")
 AXIS_COLORS = ("tab:red", "tab:green", "k")
 
 
-def bounding_cube(frames):
-    """(centre, half side) of a cube holding every point of every frame (m), with a margin."""
-    points = np.vstack([f.points() for f in frames if len(f.points())] or [np.zeros((1, 3))])
+def bounding_cube(frames, outlines=()):
+    """(centre, half side) of a cube holding every point of every frame and of the targets'
+    outlines (target_shapes.py) in them (m), with a margin."""
+    parts = [f.points() for f in frames]
+    parts += [o.in_world(f).reshape(-1, 3) for f in frames for o in outlines]
+    points = np.vstack([p for p in parts if len(p)] or [np.zeros((1, 3))])
     low, high = points.min(axis=0), points.max(axis=0)
     half = max(0.5 * float(np.max(high - low)), 1e-3) * 1.05
     return 0.5 * (low + high), half
@@ -42,8 +46,9 @@ def prepare_axes(axes, cube, view):
     axes.tick_params(labelsize="x-small")
 
 
-def draw_frame(axes, frame, label=True):
-    """Adds the threads and the body axes of `frame`; returns the artists added."""
+def draw_frame(axes, frame, outlines=(), label=True):
+    """Adds the threads, the body axes and the targets' `outlines` (target_shapes.py) of
+    `frame`; returns the artists added."""
     threads = Line3DCollection(frame.threads, colors=THREAD_COLOR, linewidths=0.8,
                                label="net threads" if label else None)
     axes.add_collection3d(threads)
@@ -53,4 +58,10 @@ def draw_frame(axes, frame, label=True):
             segment = np.vstack([body.origin, tip])
             text = f"body {number} axis {name}" if label else None
             artists += axes.plot(*segment.T, color=color, linewidth=2.0, label=text)
+    for index, outline in enumerate(outlines):
+        color = TARGET_COLORS[index % len(TARGET_COLORS)]
+        target = Line3DCollection(outline.in_world(frame), colors=color, linewidths=0.6,
+                                  label=f"target {outline.name}" if label else None)
+        axes.add_collection3d(target)
+        artists.append(target)
     return artists

@@ -32,6 +32,11 @@ def read_run_probes(run_dir):
     return read_probes(check_run_dir(run_dir) / "probes.csv", fail)
 
 
+def warn(message):
+    """A note on stderr that does not stop the script."""
+    print(f"note: {message}", file=sys.stderr)
+
+
 def exit_on_run_data_error(program, main):
     """Runs `main()` and returns its exit code; a RunDataError prints one line, returns 2."""
     try:
