@@ -49,8 +49,8 @@ KINDS = {
         "dissipated": ("energy", "J", "dissipated energy"),
     },
     "max_tension": {
-        "tension": ("tension", "N", "largest thread tension in {name}"),
-        "thread": ("thread index", DIMENSIONLESS, "index j of the thread {name}.t<j> carrying it"),
+        "tension": ("tension", "N", "largest thread tension ({name})"),
+        "thread": ("thread index", DIMENSIONLESS, "index j of the thread t<j> carrying it ({name})"),
     },
     "link_force": {
         "tension": ("tension", "N", "tension of {name}"),

@@ -9,7 +9,7 @@ from vtk_frames import read_frames
 TIME_PANELS = {  # title: (y label, a curve it must name)
     "energy balance": ("energy [J]", "kinetic energy"),
     "contact forces": ("force [N]", "normal force on hull (Σ F_n)"),
-    "tether tension": ("tension [N]", "largest thread tension in threads"),
+    "tether tension": ("tension [N]", "largest thread tension (threads)"),
     "target rates": ("angular velocity [rad/s]", "angular velocity about body x (rates)"),
 }
 
