@@ -17,13 +17,16 @@ sys.path.insert(0, str(TOOLS))
 
 @pytest.fixture(scope="session")
 def cli():
-    """Runs the ancfnet command-line tool with the given arguments; returns the finished process."""
+    """Runs the ancfnet command-line tool with the given arguments; returns the finished
+    process."""
     binary = os.environ.get("ANCFNET_CLI")
     if not binary:
         pytest.skip("ANCFNET_CLI is not set (CTest sets it)")
 
-    def run(*args):
-        return subprocess.run([binary, *map(str, args)], capture_output=True, text=True)
+    def run(*args, env=None):
+        """`env`: variables to set or change for the tool."""
+        return subprocess.run([binary, *map(str, args)], capture_output=True, text=True,
+                              env=None if env is None else {**os.environ, **env})
 
     return run
 

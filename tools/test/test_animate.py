@@ -1,6 +1,8 @@
 """animate_run.py and `ancfnet animate`: a GIF with one frame per chosen output, clear errors."""
 
 import math
+import shutil
+import subprocess
 
 import pytest
 from PIL import Image
@@ -50,8 +52,23 @@ def test_cli_refuses_a_folder_without_a_run(cli, tmp_path, subfolder, message):
     assert message in finished.stderr
 
 
-@pytest.mark.skipif(has_ffmpeg(), reason="ffmpeg is installed: MP4 can be written")
-def test_mp4_without_ffmpeg_says_what_to_install(cli, capture_run, tmp_path):
-    finished = cli("animate", capture_run, "-o", tmp_path / "movie.mp4")
+def test_without_ffmpeg_the_default_is_a_gif_and_mp4_is_refused(cli, run_copy, tmp_path):
+    no_ffmpeg = {"PATH": str(tmp_path / "empty")}  # matplotlib looks for ffmpeg on PATH
+    finished = cli("animate", run_copy, "-o", tmp_path / "movie.mp4", env=no_ffmpeg)
     assert finished.returncode == 2
-    assert "needs ffmpeg" in finished.stderr
+    assert "writing MP4 needs ffmpeg (Debian package ffmpeg" in finished.stderr
+    finished = cli("animate", run_copy, "--every", "6", env=no_ffmpeg)
+    assert finished.returncode == 0, finished.stderr
+    assert gif_frames(run_copy / "animation.gif") == 3
+
+
+@pytest.mark.skipif(not has_ffmpeg() or not shutil.which("ffprobe"),
+                    reason="no ffmpeg (scripts/install-deps.sh --video)")
+def test_mp4_has_one_frame_per_output(cli, capture_run, tmp_path):
+    movie = tmp_path / "movie.mp4"
+    finished = cli("animate", capture_run, "-o", movie)
+    assert finished.returncode == 0, finished.stderr
+    counted = subprocess.run(
+        ["ffprobe", "-v", "error", "-count_frames", "-select_streams", "v:0", "-show_entries",
+         "stream=nb_read_frames", "-of", "csv=p=0", movie], capture_output=True, text=True)
+    assert int(counted.stdout) == len(read_frames(capture_run))
