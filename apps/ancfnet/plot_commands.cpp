@@ -32,12 +32,13 @@ std::vector<PlotCommand> AddPlotCommands(CLI::App& app) {
   std::vector<PlotCommand> commands = {
       AddPlotCommand(app, "animate",
                      "Movie of a run's net and bodies (RUN_DIR/animation.mp4, or .gif without "
-                     "ffmpeg); options -o FILE, --fps N, --every K, --view front|side|top|oblique",
+                     "ffmpeg); options -o FILE, --fps N, --every K, --view front|side|top|oblique, "
+                     "--scene SCENE (draw its contact targets)",
                      "animate_run.py", {"cables.pvd"}),
       AddPlotCommand(app, "report",
                      "One-page capture report of a run (RUN_DIR/report.png): snapshots from "
                      "three views, energy, contact forces, tension, target rates; options "
-                     "--times T..., -o FILE, --pdf",
+                     "--times T..., --scene SCENE, -o FILE, --pdf",
                      "capture_report.py", {"probes.csv", "cables.pvd"}),
   };
   // The options live in a vector that no longer moves: bind them now.
