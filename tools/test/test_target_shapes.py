@@ -45,8 +45,9 @@ contact:
 
 
 def test_report_and_animation_draw_the_target(cli, capture_run, tmp_path):
-    for command, output in (("report", "page.png"), ("animate", "movie.gif")):
-        finished = cli(command, capture_run, "--scene", SCENE, "-o", tmp_path / output)
+    for command, output, *more in (("report", "page.png"),
+                                   ("animate", "movie.gif", "--every", "4")):
+        finished = cli(command, capture_run, "--scene", SCENE, "-o", tmp_path / output, *more)
         assert finished.returncode == 0, finished.stderr
         assert (tmp_path / output).stat().st_size > 0
 
