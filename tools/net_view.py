@@ -50,13 +50,13 @@ def draw_frame(axes, frame, outlines=(), label=True):
     """Adds the threads, the body axes and the targets' `outlines` (target_shapes.py) of
     `frame`; returns the artists added."""
     threads = Line3DCollection(frame.threads, colors=THREAD_COLOR, linewidths=0.8,
-                               label="net threads" if label else None)
+                               label="cables (net threads, tethers)" if label else None)
     axes.add_collection3d(threads)
     artists = [threads]
-    for number, body in enumerate(frame.bodies, start=1):
+    for number, body in enumerate(frame.bodies):
         for tip, color, name in zip(body.axis_tips, AXIS_COLORS, "xyz"):
             segment = np.vstack([body.origin, tip])
-            text = f"body {number} axis {name}" if label else None
+            text = f"body {name} axis" if label and number == 0 else None
             artists += axes.plot(*segment.T, color=color, linewidth=2.0, label=text)
     for index, outline in enumerate(outlines):
         color = TARGET_COLORS[index % len(TARGET_COLORS)]

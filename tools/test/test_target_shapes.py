@@ -55,7 +55,8 @@ def test_report_and_animation_draw_the_target(cli, capture_run, tmp_path):
 def test_report_legend_names_the_target(capture_run):
     figure = make_report(capture_run, None, read_target_outlines(SCENE))
     legend = [t.get_text() for t in figure.axes[0].get_legend().get_texts()]
-    assert "target hull" in legend and "net threads" in legend
+    assert legend == ["cables (net threads, tethers)", "body x axis", "body y axis",
+                      "body z axis", "target hull"]
 
 
 def test_a_scene_that_is_not_yaml_is_refused(cli, capture_run, tmp_path):
