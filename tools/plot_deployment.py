@@ -6,8 +6,8 @@ Usage: /usr/bin/python3 tools/plot_deployment.py PROBES_CSV [--area NAME] [--dis
 
 Reads the probe CSV of an ancfnet run with a `mouth_area` probe (column NAME.area, default
 `mouth`) and a `distance` probe (NAME.distance, default `travel`), and writes one PNG (default:
-deployment.png beside the CSV) with the area on the left axis, the distance on the right one, and
-the peak area marked. Prints the path and the peak. Exit code 2 for a missing file or column.
+deployment.png beside the CSV) with two panels sharing the time axis, the area (peak marked) and
+the distance. Prints the path and the peak. Exit code 2 for a missing file or column.
 """
 
 import argparse
@@ -20,7 +20,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402 (the backend is chosen first)
 import numpy as np  # noqa: E402
 
-from plot_probes import read_probes  # noqa: E402
+from probe_csv import read_probes  # noqa: E402
 
 
 def column(probes, name, component, fail):
@@ -44,19 +44,20 @@ def main():
     output.parent.mkdir(parents=True, exist_ok=True)
 
     peak = int(np.argmax(area))
-    figure, left = plt.subplots(figsize=(8, 4.5))
-    left.plot(time, area, color="tab:blue", label="mouth area")
-    left.plot(time[peak], area[peak], "o", color="tab:blue")
-    left.annotate(f"peak {area[peak]:.3g} m² at {time[peak]:.3g} s", (time[peak], area[peak]),
-                  textcoords="offset points", xytext=(8, -14), fontsize="small")
-    left.set_xlabel("time [s]")
-    left.set_ylabel("mouth area [m²]", color="tab:blue")
-    left.grid(True, alpha=0.3)
-    right = left.twinx()
-    right.plot(time, distance, color="tab:orange", label="distance travelled")
-    right.set_ylabel("centroid distance along the axis [m]", color="tab:orange")
-    left.set_title("Net deployment")
-    figure.legend(loc="upper left", bbox_to_anchor=(0.1, 0.9), fontsize="small")
+    figure, (top, bottom) = plt.subplots(2, 1, sharex=True, figsize=(8, 6))
+    top.plot(time, area, label=f"mouth area ({args.area})")
+    top.plot(time[peak], area[peak], "o", color="tab:blue", label="peak")
+    top.annotate(f"peak {area[peak]:.3g} m² at {time[peak]:.3g} s", (time[peak], area[peak]),
+                 textcoords="offset points", xytext=(8, -14), fontsize="small")
+    top.set_ylabel("mouth area [m²]")
+    top.set_title("Net deployment")
+    bottom.plot(time, distance, color="tab:orange",
+                label=f"centroid distance along the launch axis ({args.distance})")
+    bottom.set_ylabel("distance [m]")
+    bottom.set_xlabel("time [s]")
+    for axes, place in ((top, "center left"), (bottom, "upper left")):
+        axes.grid(True, alpha=0.3)
+        axes.legend(loc=place, fontsize="small")
     figure.tight_layout()
     figure.savefig(output, dpi=120)
     plt.close(figure)

@@ -26,7 +26,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402 (the backend is chosen first)
 import numpy as np  # noqa: E402
 
-from plot_probes import read_probes  # noqa: E402
+from probe_csv import read_probes  # noqa: E402
 
 
 def ideal_slider_acceleration(theta, crank, rod, rate):

@@ -21,7 +21,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402 (the backend is chosen first)
 import numpy as np  # noqa: E402
 
-from plot_probes import read_probes  # noqa: E402
+from probe_csv import read_probes  # noqa: E402
 
 
 def hub_angle(t, rate, ramp):
@@ -45,7 +45,8 @@ def main():
     time, probes = read_probes(args.csv, parser.error)
     tip = probes.get(args.probe)
     if tip is None or "x" not in tip or "y" not in tip:
-        parser.error(f"no position probe '{args.probe}' in {args.csv} (probes: {', '.join(probes)})")
+        parser.error(f"no position probe '{args.probe}' in {args.csv} "
+                     f"(probes: {', '.join(probes)})")
     theta = hub_angle(time, args.rate, args.time)
     deflection = -tip["x"] * np.sin(theta) + tip["y"] * np.cos(theta)
 

@@ -1,5 +1,5 @@
 // The ancfnet command-line tool: run, static, check and modal for a scene file; identify
-// modes in a probes.csv file.
+// modes in a probes.csv file; animate and report a run's outputs.
 // Exit codes: 0 success, 2 invalid input (one line on stderr; also a model too large for the
 // memory), 3 the solver gave up (outputs written so far are kept and summary.json says why),
 // 130 / 143 a run stopped by SIGINT / SIGTERM after the step in progress (outputs consistent,
@@ -22,6 +22,7 @@
 #include "assumed_modes_command.hpp"
 #include "identify_command.hpp"
 #include "modal_command.hpp"
+#include "plot_commands.hpp"
 #include "scene_report.hpp"
 
 namespace {
@@ -122,6 +123,7 @@ int main(int argc, char** argv) {
   CLI::App* identify = ancfnet::AddIdentifyCommand(app, &identify_arguments);
   ancfnet::AssumedModesArguments assumed_modes;
   ancfnet::AddAssumedModesCommand(app, &assumed_modes);
+  const std::vector<ancfnet::PlotCommand> plot_commands = ancfnet::AddPlotCommands(app);
 
   try {
     app.parse(argc, argv);
@@ -137,6 +139,8 @@ int main(int argc, char** argv) {
     if (*modal.command) return ancfnet::RunModalCommand(modal);
     if (*identify) return ancfnet::RunIdentifyCommand(identify_arguments, stdout);
     if (*assumed_modes.command) return ancfnet::RunAssumedModesCommand(assumed_modes);
+    for (const ancfnet::PlotCommand& plot : plot_commands)
+      if (*plot.command) ancfnet::RunPlotCommand(plot);
     const auto type = *run_static ? std::optional(ancfnet::AnalysisType::kStatic) : std::nullopt;
     return RunCommand(scene_file, output_dir, quiet, type, force, run_options);
   } catch (const ancfnet::InputError& e) {
