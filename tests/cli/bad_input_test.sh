@@ -192,6 +192,11 @@ mutate beam_net_with_rope_key 's/    knot_model: ideal/    knot_model: ideal\n  
 expect_scene_error beam_net_with_rope_key "tension_only: false" "tension_only" "beam threads"
 mutate beam_net_without_poisson 's/    knot_model: ideal/    knot_model: ideal\n    element: ancf_beam/; /tension_only: false/d'
 expect_scene_error beam_net_without_poisson "    material: thread" "material" "poisson_ratio"
+# Knot sections are a beam net's; their stiffness needs them held.
+mutate cable_net_knot_sections 's/    knot_model: ideal/    knot_model: ideal\n    knot_sections: held/'
+expect_scene_error cable_net_knot_sections "knot_sections: held" "knot_sections" "beam threads"
+mutate beam_net_free_knot_stiffness 's/    knot_model: ideal/    knot_model: ideal\n    element: ancf_beam\n    knot_sections: free\n    knot_section_stiffness: 10/; /tension_only: false/d; s/youngs_modulus: \([0-9.e]*\),/youngs_modulus: \1, poisson_ratio: 0.3,/'
+expect_scene_error beam_net_free_knot_stiffness "knot_section_stiffness" "knot_section_stiffness" "held"
 scene="$beam_scene"
 
 # Command-line mistakes.

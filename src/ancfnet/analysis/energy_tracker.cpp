@@ -4,6 +4,7 @@
 #include "ancfnet/forces/clearance_joint_forces.hpp"
 #include "ancfnet/forces/link_forces.hpp"
 #include "ancfnet/forces/orbital_frame.hpp"
+#include "ancfnet/forces/section_lock_forces.hpp"
 
 namespace ancfnet {
 
@@ -30,8 +31,9 @@ double CalcStrainEnergy(const Model& model, const Workspace& ws, const VectorXd&
       energy += CalcCableStrainEnergy(element.parameters, model.Gather(element, q));
   for (const BeamElement& beam : model.beam_elements())
     energy += CalcBeamStrainEnergy(beam.parameters, model.Gather(beam, q));
-  return energy + CalcLinkEnergy(model, ws, q) + CalcAttachmentEnergy(model, ws, q) +
-         ws.contact_energy + CalcClearanceJointEnergy(model, q, ws.body_rotation);
+  return energy + CalcLinkEnergy(model, ws, q) + CalcSectionLockEnergy(model, q) +
+         CalcAttachmentEnergy(model, ws, q) + ws.contact_energy +
+         CalcClearanceJointEnergy(model, q, ws.body_rotation);
 }
 
 EnergyTracker::EnergyTracker(const Model& model, const Workspace& ws, const State& state,

@@ -73,7 +73,8 @@ SystemMatrix::SystemMatrix(const Model& model, const DofMap& dofs)
       num_bodies_(static_cast<Index>(model.rigid_bodies().size())),
       num_attachments_(static_cast<Index>(model.body_attachments().size())),
       num_clearance_joints_(static_cast<Index>(model.clearance_joints().size())),
-      num_ideal_joints_(static_cast<Index>(model.ideal_joints().size())) {
+      num_ideal_joints_(static_cast<Index>(model.ideal_joints().size())),
+      num_beam_elements_(static_cast<Index>(model.beam_elements().size())) {
   for (const CableElement& element : model.elements())
     group_blocks_.push_back({element.dofs[0], element.dofs[3], element.dofs[6], element.dofs[9]});
   for (const PointMass& point : model.point_masses()) group_blocks_.push_back({point.dof});
@@ -101,6 +102,11 @@ SystemMatrix::SystemMatrix(const Model& model, const DofMap& dofs)
     std::vector<Index> group;
     for (int b = 0; b < kBeamElementBlocks; ++b) group.push_back(beam.dofs[3 * b]);
     group_blocks_.push_back(group);
+  }
+  for (const SectionLock& lock : model.section_locks()) {
+    const Index first = model.nodes()[lock.first_node].section_dof;
+    const Index second = model.nodes()[lock.second_node].section_dof;
+    group_blocks_.push_back({first, first + 3, second, second + 3});
   }
   Rebuild();
 }
@@ -282,6 +288,13 @@ void SystemMatrix::AddBeamElementBlock(Index beam, const Matrix24d& block, doubl
   const Group& group =
       groups_[num_elements_ + num_point_masses_ + num_links_ + num_bodies_ + num_attachments_ +
               num_clearance_joints_ + num_ideal_joints_ + beam];
+  AddDenseBlock(slot_.data() + group.first_slot, block, scale, matrix_.valuePtr());
+}
+
+void SystemMatrix::AddSectionLockBlock(Index lock, const Matrix12d& block, double scale) {
+  const Group& group =
+      groups_[num_elements_ + num_point_masses_ + num_links_ + num_bodies_ + num_attachments_ +
+              num_clearance_joints_ + num_ideal_joints_ + num_beam_elements_ + lock];
   AddDenseBlock(slot_.data() + group.first_slot, block, scale, matrix_.valuePtr());
 }
 

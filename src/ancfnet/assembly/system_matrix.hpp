@@ -23,7 +23,8 @@ class Model;
 /// attachment (the blocks of its point, then the body's x and ψ), each clearance joint (the blocks
 /// of its journal's anchor, then of its bearing's), each ideal joint (its first anchor's blocks,
 /// then its second's), each beam element (its eight blocks r_A, r_x,A, r_y,A, r_z,A, r_B, …; its
-/// centre line is also an element group), and the contact couplings that come and go while the
+/// centre line is also an element group), each section lock (the r_y, r_z blocks of its first
+/// node, then of its second), and the contact couplings that come and go while the
 /// model moves (the blocks of one owner, an element, a point mass or a body, then of the other).
 class SystemMatrix {
  public:
@@ -88,6 +89,9 @@ class SystemMatrix {
   void AddClearanceJointBlock(Index joint, int i, int j, const Matrix3d& block, double scale = 1.0);
   /// The same for ideal joint `joint` (its first anchor's blocks, then its second's).
   void AddIdealJointBlock(Index joint, int i, int j, const Matrix3d& block, double scale = 1.0);
+  /// Adds scale · block to the entries of section lock `lock` (Model::section_locks()), its
+  /// coordinates (r_y,1, r_z,1, r_y,2, r_z,2).
+  void AddSectionLockBlock(Index lock, const Matrix12d& block, double scale = 1.0);
   /// Adds scale · block to the 3×3 block of rows starting at coordinate `row`, columns at `col`
   /// (both inside one coupling group). Searches the pattern: for rare terms only.
   void AddBlock3(Index row, Index col, const Matrix3d& block, double scale = 1.0);
@@ -128,6 +132,7 @@ class SystemMatrix {
   Index num_attachments_ = 0;
   Index num_clearance_joints_ = 0;
   Index num_ideal_joints_ = 0;
+  Index num_beam_elements_ = 0;
   // Index in matrix_.valuePtr() of each group entry, or −1 when its row or column is fixed.
   std::vector<int> slot_;
 };

@@ -5,10 +5,11 @@
 #include "ancfnet/elements/ancf_cable_step_force.hpp"
 #include "ancfnet/elements/hermite_shape.hpp"
 #include "ancfnet/forces/body_forces.hpp"
+#include "ancfnet/forces/clearance_joint_forces.hpp"
 #include "ancfnet/forces/link_forces.hpp"
 #include "ancfnet/forces/orbital_frame.hpp"
+#include "ancfnet/forces/section_lock_forces.hpp"
 #include "ancfnet/forces/slope_moment.hpp"
-#include "ancfnet/forces/clearance_joint_forces.hpp"
 
 namespace ancfnet {
 namespace {
@@ -103,6 +104,7 @@ void CalcInternalForces(const Model& model, const VectorXd& q, const VectorXd& v
     ScatterAdd(model.beam_elements()[b], ws.beam_viscous_force[b], &ws.viscous_force);
   }
   AddLinkForces(model, q, v, ws);
+  AddSectionLockForces(model, q, ws);
   AddBodyForces(model, q, v, ws);
   AddClearanceJointForces(model, q, v, ws);
   AddOrbitalFrameForces(model, q, v, ws);
@@ -180,6 +182,8 @@ void AssembleIterationMatrix(const Model& model, const VectorXd& q, const Vector
   }
   AddLinkForces(model, q, v, ws);
   AddLinkJacobians(model, q, v, weights, ws, matrix);
+  AddSectionLockForces(model, q, ws);
+  AddSectionLockJacobians(model, q, weights.stiffness, matrix);
   AddBodyForces(model, q, v, ws);
   AddBodyJacobians(model, q, v, weights, ws, matrix);
   AddClearanceJointForces(model, q, v, ws);

@@ -220,7 +220,9 @@ void ReadNet(const YamlValue& item, const Library& library, ModelBuilder* builde
                                         "thread_breaking_force",
                                         "link_breaking_force",
                                         "tether",
-                                        "element"};
+                                        "element",
+                                        "knot_sections",
+                                        "knot_section_stiffness"};
   if (type == 2)
     keys.insert(keys.end(), {"knot_positions", "threads", "perimeter", "axis"});
   else
@@ -249,7 +251,19 @@ void ReadNet(const YamlValue& item, const Library& library, ModelBuilder* builde
                         key));
     spec.beam_threads = ReadBeamMaterialAndSection(map, library);
     spec.thread = MakeCableProperties(ReadMaterial(map, map, library), section);
+    if (auto v = map.Find("knot_sections"))
+      spec.hold_knot_sections = v->AsEnum<bool>({{"held", true}, {"free", false}});
+    if (auto v = map.Find("knot_section_stiffness")) {
+      if (!spec.hold_knot_sections)
+        v->Fail("knot_section_stiffness is for held knot sections (knot_sections: held)");
+      spec.knot_section_stiffness = v->AsPositive();
+    }
   } else {
+    for (const char* key : {"knot_sections", "knot_section_stiffness"})
+      if (auto v = map.Find(key))
+        v->Fail(fmt::format(
+            "{} is for beam threads (element: ancf_beam): a cable's section has no orientation",
+            key));
     spec.thread = ReadThreadProperties(map, ReadMaterial(map, map, library), section);
   }
   if (auto v = map.Find("elements_per_thread")) spec.elements_per_thread = v->AsInt(1, 1000);

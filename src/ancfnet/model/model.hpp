@@ -110,6 +110,20 @@ struct SpringDamperLink {
   double breaking_force = std::numeric_limits<double>::infinity();
 };
 
+/// A rotational spring holding the cross-sections of two beam nodes together: the beam threads
+/// meeting at a knot, so that the knot carries torsion and bending from one to the other
+/// (forces/section_lock.hpp, W = (k/4) |R₁ − R₂|²_F).
+struct SectionLock {
+  std::string name;
+  Index first_node = 0;   ///< a beam node (CableNode::section_dof ≥ 0)
+  Index second_node = 0;  ///< another beam node
+  /// Reference section frames [d₁ d₂ d₃] (d₁ = d₂ × d₃) of the nodes, from the initial r_y, r_z:
+  /// the lock holds the sections' relative orientation of the start.
+  Matrix3d first_frame = Matrix3d::Identity();
+  Matrix3d second_frame = Matrix3d::Identity();
+  double stiffness = 0.0;  ///< k (N m/rad), > 0
+};
+
 /// A cable point or point mass tied to a body point s_B by an isotropic linear spring-damper
 /// (forces/body_attachment.hpp): f = −k (p − (x + R s_B)) − c (ṗ − (ẋ + R (ω × s_B))) on the
 /// point, −f on the body at x + R s_B.
@@ -167,6 +181,8 @@ class Model {
   const std::vector<CableNode>& nodes() const { return nodes_; }
   const std::vector<PointMass>& point_masses() const { return point_masses_; }
   const std::vector<SpringDamperLink>& links() const { return links_; }
+  /// Section locks between beam nodes (knots of beam threads).
+  const std::vector<SectionLock>& section_locks() const { return section_locks_; }
   const std::vector<Net>& nets() const { return nets_; }
   /// Rigid bodies (model/rigid_body.hpp) and their attachments.
   const std::vector<RigidBody>& rigid_bodies() const { return rigid_bodies_; }
@@ -243,6 +259,7 @@ class Model {
   std::vector<BeamElement> beam_elements_;
   std::vector<PointMass> point_masses_;
   std::vector<SpringDamperLink> links_;
+  std::vector<SectionLock> section_locks_;
   std::vector<Net> nets_;
   std::vector<RigidBody> rigid_bodies_;
   std::vector<BodyAttachment> body_attachments_;

@@ -119,6 +119,14 @@ class ModelBuilder {
                        const CablePointRef& second, const ConnectionLaw& law,
                        std::optional<double> natural_length = std::nullopt,
                        double breaking_force = std::numeric_limits<double>::infinity());
+  /// Adds a section lock (model.hpp, SectionLock) between the beam nodes at `first` and `second`
+  /// (nodes of beam cables, different), holding their sections' relative orientation of now.
+  /// Its stiffness k (N m/rad, > 0) defaults to kSectionLockStiffnessFactor · max(GJ, EI_y,
+  /// EI_z)/L_e over the beam elements next to the two nodes: the lock then turns by less than
+  /// 1/kSectionLockStiffnessFactor of what one such element twists or bends under the same moment.
+  void AddSectionLock(const std::string& name, const CablePointRef& first,
+                      const CablePointRef& second, std::optional<double> stiffness = std::nullopt);
+  static constexpr double kSectionLockStiffnessFactor = 100.0;
   /// Adds a rigid body (model/rigid_body.hpp) with six coordinates (x_WB, ψ); returns its index.
   /// Its name is unique among cables, point masses and bodies; mass > 0; inertia SPD with
   /// principal moments satisfying the triangle inequality; orientation a rotation matrix. A

@@ -50,10 +50,35 @@ void Validate(const NetSpec& spec) {
       throw InputError(
           fmt::format("a thread's natural length must be > 0 (got {})", *design.natural_length));
   }
+  if (spec.beam_threads && spec.hold_knot_sections && can_fail)
+    throw InputError(fmt::format(
+        "net '{}' holds the sections of its beam threads at the knots, so a failed thread would "
+        "stay held: let the knots free the sections (knot_sections: free) for threads that fail",
+        spec.name));
   for (const KnotMass& extra : spec.knot_masses) {
     if (extra.knot < 0 || extra.knot >= static_cast<Index>(spec.topology.knots.size()))
       throw InputError(fmt::format("no knot {} in net '{}'", extra.knot, spec.name));
     if (!(extra.mass > 0.0)) throw InputError("a mass at a knot must be > 0");
+  }
+}
+
+// A section lock between every pair of beam-thread ends meeting at a knot, named
+// "NET.k<i>.lock<n>".
+void HoldKnotSections(ModelBuilder& builder, const NetSpec& spec) {
+  std::vector<std::vector<CablePointRef>> ends(spec.topology.knots.size());
+  for (std::size_t j = 0; j < spec.topology.threads.size(); ++j) {
+    const auto [a, b] = spec.topology.threads[j];
+    const std::string thread = ThreadName(spec.name, static_cast<Index>(j));
+    ends[a].push_back({thread, 0.0});
+    ends[b].push_back({thread, 1.0});
+  }
+  for (std::size_t k = 0; k < ends.size(); ++k) {
+    int n = 0;
+    for (std::size_t i = 0; i < ends[k].size(); ++i)
+      for (std::size_t j = i + 1; j < ends[k].size(); ++j)
+        builder.AddSectionLock(
+            fmt::format("{}.lock{}", KnotName(spec.name, static_cast<Index>(k)), n++), ends[k][i],
+            ends[k][j], spec.knot_section_stiffness);
   }
 }
 
@@ -123,6 +148,7 @@ void AddNet(ModelBuilder& builder, const NetSpec& spec) {
                               0.0, spec.link_breaking_force);
     }
   }
+  if (spec.beam_threads && spec.hold_knot_sections) HoldKnotSections(builder, spec);
   if (spec.tether) AddNetTether(builder, spec, start, *spec.tether);
   // The threads' velocities above also set the shared knot coordinates of ideal knots.
   for (Index i = 0; i < num_knots; ++i)

@@ -43,9 +43,16 @@ struct NetSpec {
   /// Set: every thread is a beam of ANCF beam elements (elements/ancf_beam.hpp) of this material
   /// and section, its d₂ along the net's axis (the orientation given here is not used), and
   /// `thread` keeps only the drawing radius and the damping times, which must be the beam
-  /// material's (ModelBuilder::AddCable). Knots join threads at their positions only (a ball
-  /// joint), so each thread is free to spin about its axis: dynamics only, or supports of its own.
+  /// material's (ModelBuilder::AddCable). Knots join threads at their positions and, with
+  /// hold_knot_sections, their sections' orientations.
   std::optional<BeamCableSpec> beam_threads;
+  /// Beam threads only: every pair of thread ends meeting at a knot gets a section lock
+  /// (ModelBuilder::AddSectionLock), so that the knot carries torsion and bending across like a
+  /// tied knot. False: a ball joint, each thread free to spin about its axis there (dynamics
+  /// only, or supports of its own). Excludes threads and links that can fail.
+  bool hold_knot_sections = true;
+  /// Stiffness (N m/rad) of those locks; default ModelBuilder::AddSectionLock's.
+  std::optional<double> knot_section_stiffness;
   int elements_per_thread = 1;
   /// Per thread of the topology (empty, or one entry per thread): its own properties, elements
   /// or natural length.

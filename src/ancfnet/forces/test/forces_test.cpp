@@ -124,6 +124,14 @@ Model MakeBeamModel(bool orbital_frame = false) {
   builder.AddCable({.name = "b", .start = Vector3d(1.0, 0.0, 0.0), .end = Vector3d(2.0, 0.0, 0.0),
                     .num_elements = 2, .properties = properties, .beam = beam,
                     .start_cable = "a"});
+  // A third beam at an angle, its section held to b's end by a section lock (a knot).
+  builder.AddCable({.name = "c",
+                    .start = Vector3d(2.0, 0.0, 0.0),
+                    .end = Vector3d(2.5, 1.0, 0.2),
+                    .num_elements = 1,
+                    .properties = properties,
+                    .beam = BeamCableSpec{beam.material, beam.section, Vector3d(1.0, 0.0, 1.0)}});
+  builder.AddSectionLock("lock", {"b", 1.0}, {"c", 0.0}, 1.0e3);
   builder.AddClamp({"a", 0.0});
   builder.AddPointForce({"b", 0.3}, Vector3d(1.0, -2.0, 3.0));
   builder.AddPointMoment({"b", 1.0}, Vector3d(0.5, 4.0, -1.0));
@@ -205,7 +213,8 @@ TEST(Assembly, IterationMatrixWithRigidBodiesInAnOrbitalFrameMatchesFiniteDiffer
 
 TEST(Assembly, IterationMatrixWithBeamsMatchesFiniteDifferences) {
   const Model model = MakeBeamModel();
-  ASSERT_EQ(model.beam_elements().size(), 2u);
+  ASSERT_EQ(model.beam_elements().size(), 3u);
+  ASSERT_EQ(model.section_locks().size(), 1u);
   ExpectIterationMatrixMatchesFiniteDifferences(model);
 }
 
