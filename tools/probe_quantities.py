@@ -14,7 +14,8 @@ ENERGY_TERMS = ("kinetic", "strain", "gravity", "work", "dissipated")
 XYZ = ("x", "y", "z")
 DIMENSIONLESS = "–"
 # Quantities that take whole values only (their axes get integer ticks).
-COUNTS = ("number of contacts", "thread index", "contact mode")
+COUNTS = ("number of contacts", "thread index", "contact mode", "in contact (0/1)",
+          "escaped (0/1)")
 
 
 def _vector(prefix, quantity, unit, legend, axes=XYZ):
@@ -72,6 +73,19 @@ KINDS = {
     "velocity": _vector("v", "velocity", "m/s", "velocity of {name}, {axis}"),
     "mouth_area": {"area": ("area", "m²", "mouth area of {name}")},
     "distance": {"distance": ("distance", "m", "distance travelled by {name}")},
+    # docs/theory.md, "Capture metrics"
+    "capture": {
+        "contact": ("in contact (0/1)", DIMENSIONLESS, "net touches the target ({name})"),
+        "enclosed": ("fraction", DIMENSIONLESS, "capture quality: target ball enclosed ({name})"),
+        "mouth_ratio": ("fraction", DIMENSIONLESS, "mouth area / initial ({name})"),
+        "knot_coverage": ("fraction", DIMENSIONLESS, "knots touching the target ({name})"),
+        "thread_coverage": ("fraction", DIMENSIONLESS, "threads touching the target ({name})"),
+        "thread_tension": ("tension", "N", "largest thread tension ({name})"),
+        "thread_load": ("tension / breaking force", DIMENSIONLESS, "threads ({name})"),
+        "tether_tension": ("tension", "N", "largest tether tension ({name})"),
+        "tether_load": ("tension / breaking force", DIMENSIONLESS, "tether ({name})"),
+        "escaped": ("escaped (0/1)", DIMENSIONLESS, "target escaped ({name})"),
+    },
 }
 
 

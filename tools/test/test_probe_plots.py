@@ -31,7 +31,7 @@ def test_every_column_of_the_run_has_a_known_si_unit(capture_run):
     _, probes = read_run_probes(capture_run)
     kinds = {name: probe_kind(columns) for name, columns in probes.items()}
     assert kinds == {"rates": "body_velocity", "hull": "contact", "energy": "energy",
-                     "threads": "max_tension"}
+                     "threads": "max_tension", "grab": "capture"}
     for name, columns in probes.items():
         raw_names = {f"{name}.{component}" for component in columns}
         for panel in probe_panels(name, columns):

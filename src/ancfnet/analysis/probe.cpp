@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "ancfnet/analysis/cable_tension.hpp"
+#include "ancfnet/analysis/capture_metrics.hpp"
 #include "ancfnet/analysis/net_metrics.hpp"
 #include "ancfnet/forces/clearance_joint_forces.hpp"
 #include "ancfnet/forces/joint_constraints.hpp"
@@ -60,6 +61,11 @@ std::vector<std::string> ProbeColumns(const Probe& probe) {
               n + ".mode"};
     case ProbeQuantity::kJointReaction:
       return {n + ".fx", n + ".fy", n + ".fz", n + ".mx", n + ".my", n + ".mz"};
+    case ProbeQuantity::kCapture:
+      return {n + ".contact",       n + ".enclosed",        n + ".mouth_ratio",
+              n + ".knot_coverage", n + ".thread_coverage", n + ".thread_tension",
+              n + ".thread_load",   n + ".tether_tension",  n + ".tether_load",
+              n + ".escaped"};
   }
   return {};
 }
@@ -78,6 +84,12 @@ Vector3d CalcNetCentroid(const Model& model, const Net& net, const VectorXd& q) 
   std::vector<Vector3d> knots;
   for (Index knot : net.knots) knots.push_back(q.segment<3>(model.point_masses()[knot].dof));
   return CalcCentroid(knots);
+}
+
+double CalcNetMouthArea(const Model& model, const Net& net, const VectorXd& q) {
+  std::vector<Vector3d> polygon;
+  for (Index knot : net.perimeter) polygon.push_back(q.segment<3>(model.point_masses()[knot].dof));
+  return CalcMouthArea(polygon, net.axis);
 }
 
 ContactProbeValues CalcContactProbeValues(const std::vector<ContactPoint>& contacts, Index target,
@@ -111,14 +123,9 @@ void EvaluateProbe(const Probe& probe, const Model& model, const State& state,
       values->insert(values->end(), {energy.kinetic, energy.strain, energy.gravity, energy.work,
                                      energy.dissipated});
       break;
-    case ProbeQuantity::kMouthArea: {
-      const Net& net = model.nets()[probe.net];
-      std::vector<Vector3d> polygon;
-      for (Index knot : net.perimeter)
-        polygon.push_back(state.q.segment<3>(model.point_masses()[knot].dof));
-      values->push_back(CalcMouthArea(polygon, net.axis));
+    case ProbeQuantity::kMouthArea:
+      values->push_back(CalcNetMouthArea(model, model.nets()[probe.net], state.q));
       break;
-    }
     case ProbeQuantity::kCentroid:
     case ProbeQuantity::kCentroidVelocity: {
       // The centroid is linear in the knot positions: its velocity is the same mean of velocities.
@@ -197,6 +204,17 @@ void EvaluateProbe(const Probe& probe, const Model& model, const State& state,
       const JointReaction r = constraints.CalcReaction(probe.joint, state.multipliers);
       values->insert(values->end(), {r.force.x(), r.force.y(), r.force.z(), r.moment.x(),
                                      r.moment.y(), r.moment.z()});
+      break;
+    }
+    case ProbeQuantity::kCapture: {
+      const CaptureMetrics m =
+          CalcCaptureMetrics(model, state, probe.net, probe.target, contacts, probe.reference_area);
+      values->insert(
+          values->end(),
+          {m.in_contact ? 1.0 : 0.0, m.enclosed_fraction, m.mouth_area_ratio, m.knot_coverage,
+           m.thread_coverage, m.thread_tension,
+           CalcLoadRatio(m.thread_tension, m.thread_breaking_force), m.tether_tension,
+           CalcLoadRatio(m.tether_tension, m.tether_breaking_force), m.escaped ? 1.0 : 0.0});
       break;
     }
   }

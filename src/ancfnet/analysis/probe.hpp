@@ -41,6 +41,13 @@ enum class ProbeQuantity {
   /// NAME.fx/fy/fz, NAME.mx/my/mz: the force (N) an ideal joint applies to its second side and
   /// its moment about that side's centre (N m), world axes (forces/joint_constraints.hpp).
   kJointReaction,
+  /// NAME.contact, NAME.enclosed, NAME.mouth_ratio, NAME.knot_coverage, NAME.thread_coverage,
+  /// NAME.thread_tension, NAME.thread_load, NAME.tether_tension, NAME.tether_load,
+  /// NAME.escaped: the capture metrics of net `net` round target `target`
+  /// (analysis/capture_metrics.hpp): contact (0/1), Q, A/A₀, the fractions of knots and threads
+  /// touching, the largest thread and tether tensions (N) and their ratios to the breaking
+  /// force (CalcLoadRatio), escaped (0/1).
+  kCapture,
 };
 
 /// A named probe. Position and velocity probes read a point (a cable material point or a point
@@ -54,11 +61,13 @@ struct Probe {
   Index net = -1;
   Index link = -1;
   Index body = -1;
-  Index target = -1;  ///< kContact: index into ContactSpec::targets, or −1 for every contact
+  /// kContact: index into ContactSpec::targets, or −1 for every contact; kCapture: the target
+  Index target = -1;
   /// kClearanceJoint: index into Model::clearance_joints(); kJointReaction: into
   /// Model::ideal_joints().
   Index joint = -1;
   Vector3d reference = Vector3d::Zero();  ///< kDistance: the centroid at the start
+  double reference_area = 0.0;            ///< kCapture: the net's mouth area at the start (m²)
 };
 
 /// The largest elastic tension over a net's threads (N, CalcCableMaxTension of
@@ -72,6 +81,10 @@ ThreadTension CalcMaxThreadTension(const Model& model, const Net& net, const Vec
 
 /// Mean position of a net's knots (m).
 Vector3d CalcNetCentroid(const Model& model, const Net& net, const VectorXd& q);
+
+/// The net's mouth area (m², CalcMouthArea of its perimeter knots projected normal to its axis)
+/// at coordinates q.
+double CalcNetMouthArea(const Model& model, const Net& net, const VectorXd& q);
 
 /// What a contact probe reports of a set of active contacts (ContactPoint records): their number,
 /// Σ F_n (N), Σ |f_t| (N, the sum of the friction forces' magnitudes), the force the targets feel,

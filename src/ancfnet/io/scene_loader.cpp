@@ -289,6 +289,22 @@ Index ReadNamedIndex(const YamlValue& value, const Items& items, std::string_vie
   return found;
 }
 
+// A capture probe's net, its initial mouth area, and its target: a bounded contact target.
+void ReadCaptureProbe(const YamlMap& map, const Model& model, Probe* probe) {
+  const YamlValue net = map.Get("net");
+  probe->net = ReadNamedIndex(net, model.nets(), "net", "nets");
+  if (!model.contact().enabled())
+    map.Get("quantity").Fail("a capture probe needs contact targets (a `contact:` section)");
+  const YamlValue target = map.Get("target");
+  probe->target = ReadNamedIndex(target, model.contact().targets, "contact target", "targets");
+  if (model.contact().targets[probe->target].kind == ContactTarget::Kind::kPlane)
+    target.Fail(
+        "a capture probe needs a bounded target (sphere, box, cylinder, capsule, mesh), "
+        "not a plane");
+  probe->reference_area =
+      CalcNetMouthArea(model, model.nets()[probe->net], model.initial_positions());
+}
+
 // Probes are read once the model is built: their points resolve to material points.
 std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
                               const std::vector<std::string>& point_masses) {
@@ -312,7 +328,8 @@ std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
                                     {"body_velocity", ProbeQuantity::kBodyVelocity},
                                     {"contact", ProbeQuantity::kContact},
                                     {"clearance_joint", ProbeQuantity::kClearanceJoint},
-                                    {"joint_reaction", ProbeQuantity::kJointReaction}});
+                                    {"joint_reaction", ProbeQuantity::kJointReaction},
+                                    {"capture", ProbeQuantity::kCapture}});
     const bool whole_system = probe.quantity == ProbeQuantity::kEnergy;
     const bool of_a_point =
         probe.quantity == ProbeQuantity::kPosition || probe.quantity == ProbeQuantity::kVelocity;
@@ -322,6 +339,7 @@ std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
     const bool of_a_body = probe.quantity == ProbeQuantity::kBodyPose ||
                            probe.quantity == ProbeQuantity::kBodyVelocity;
     const bool of_contacts = probe.quantity == ProbeQuantity::kContact;
+    const bool of_a_capture = probe.quantity == ProbeQuantity::kCapture;
     const bool of_a_joint = probe.quantity == ProbeQuantity::kClearanceJoint ||
                             probe.quantity == ProbeQuantity::kJointReaction;
     if (of_a_body)
@@ -336,6 +354,8 @@ std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
       map.CheckKeys({"name", "quantity", "target"});
     else if (of_a_joint)
       map.CheckKeys({"name", "quantity", "joint"});
+    else if (of_a_capture)
+      map.CheckKeys({"name", "quantity", "net", "target"});
     else
       map.CheckKeys({"name", "quantity", "net"});
     probe.name = names.Read(map.Get("name"));
@@ -359,6 +379,8 @@ std::vector<Probe> ReadProbes(const YamlValue& list, const Model& model,
           ReadNamedIndex(map.Get("joint"), model.clearance_joints(), "clearance joint", "joints");
     } else if (of_a_joint) {
       probe.joint = ReadNamedIndex(map.Get("joint"), model.ideal_joints(), "ideal joint", "joints");
+    } else if (of_a_capture) {
+      ReadCaptureProbe(map, model, &probe);
     } else if (!whole_system) {
       probe.net = ReadNamedIndex(map.Get("net"), model.nets(), "net", "nets");
       probe.reference = CalcNetCentroid(model, model.nets()[probe.net], model.initial_positions());

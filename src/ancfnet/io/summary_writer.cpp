@@ -6,6 +6,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "ancfnet/analysis/capture_metrics.hpp"
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/model/net_builder.hpp"
 
@@ -30,10 +31,39 @@ Json FailuresJson(const std::vector<FailureEvent>& failures) {
   return list;
 }
 
+// A capture probe's metrics (analysis/capture_metrics.hpp) and its first contact time.
+Json CaptureJson(const Probe& probe, const Model& model, const State& state,
+                 const std::vector<ContactPoint>& contacts, const RunSummary& summary) {
+  const CaptureMetrics m =
+      CalcCaptureMetrics(model, state, probe.net, probe.target, contacts, probe.reference_area);
+  const auto first = summary.first_contact_times.find(probe.name);
+  Json tether = nullptr;
+  if (m.has_tether)
+    tether = {
+        {"tension", Number(m.tether_tension)},
+        {"breaking_force", Number(m.tether_breaking_force)},
+        {"safety_factor", Number(CalcSafetyFactor(m.tether_breaking_force, m.tether_tension))}};
+  return {{"capture",
+           {{"first_contact_time",
+             first == summary.first_contact_times.end() ? Json(nullptr) : Number(first->second)},
+            {"enclosed_fraction", Number(m.enclosed_fraction)},
+            {"mouth_area_ratio", Number(m.mouth_area_ratio)},
+            {"knot_coverage", Number(m.knot_coverage)},
+            {"thread_coverage", Number(m.thread_coverage)},
+            {"thread_tension", Number(m.thread_tension)},
+            {"thread_breaking_force", Number(m.thread_breaking_force)},
+            {"thread_safety_factor",
+             Number(CalcSafetyFactor(m.thread_breaking_force, m.thread_tension))},
+            {"tether", tether},
+            {"escaped", m.escaped}}}};
+}
+
 Json ProbeJson(const Probe& probe, const Model& model, const State& state,
-               const EnergyAccount& energy, const std::vector<ContactPoint>& contacts) {
+               const RunSummary& summary, const std::vector<ContactPoint>& contacts) {
+  if (probe.quantity == ProbeQuantity::kCapture)
+    return CaptureJson(probe, model, state, contacts, summary);
   std::vector<double> values;
-  EvaluateProbe(probe, model, state, energy, contacts, &values);
+  EvaluateProbe(probe, model, state, summary.energy, contacts, &values);
   switch (probe.quantity) {
     case ProbeQuantity::kPosition:
     case ProbeQuantity::kVelocity: {
@@ -98,6 +128,8 @@ Json ProbeJson(const Probe& probe, const Model& model, const State& state,
       return {{"joint_reaction",
                {{"force", {Number(values[0]), Number(values[1]), Number(values[2])}},
                 {"moment", {Number(values[3]), Number(values[4]), Number(values[5])}}}}};
+    case ProbeQuantity::kCapture:
+      break;  // CaptureJson
   }
   return Json::object();
 }
@@ -109,7 +141,7 @@ void WriteSummaryJson(const std::filesystem::path& path, const RunSummary& summa
                       const std::vector<ContactPoint>& contacts) {
   Json probe_values = Json::object();
   for (const Probe& probe : probes)
-    probe_values[probe.name] = ProbeJson(probe, model, state, summary.energy, contacts);
+    probe_values[probe.name] = ProbeJson(probe, model, state, summary, contacts);
   const Json json = {
       {"status", summary.completed     ? "completed"
                  : summary.interrupted ? "interrupted"

@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <map>
 #include <memory>
 #include <optional>
 #include <utility>
@@ -16,6 +17,7 @@
 #include "ancfnet/io/checkpoint_file.hpp"
 #include "ancfnet/io/contact_vtk_writer.hpp"
 #include "ancfnet/io/output_directory.hpp"
+#include "ancfnet/io/probe_csv_reader.hpp"
 #include "ancfnet/io/probe_csv_writer.hpp"
 #include "ancfnet/io/vtk_writer.hpp"
 #include "ancfnet/run/progress_reporter.hpp"
@@ -136,6 +138,24 @@ void CheckCheckpointOptions(const Scene& scene, const RunOptions& options, bool 
         "--checkpoint-every {} s: must be 0 (none) or at least the time step {} s", every, step));
 }
 
+// The first time in probes.csv at which each capture probe's `contact` column is 1: read back
+// from the file so that a run continued from a checkpoint sees the rows of the first part.
+std::map<std::string, double> FindFirstContactTimes(const std::filesystem::path& csv,
+                                                    const std::vector<Probe>& probes) {
+  std::map<std::string, double> times;
+  for (const Probe& probe : probes) {
+    if (probe.quantity != ProbeQuantity::kCapture) continue;
+    const ProbeSeries series = ReadProbeCsv(csv, {probe.name + ".contact"});
+    for (Eigen::Index row = 0; row < series.time.size(); ++row) {
+      if (series.values(row, 0) > 0.5) {
+        times[probe.name] = series.time[row];
+        break;
+      }
+    }
+  }
+  return times;
+}
+
 }  // namespace
 
 RunSummary RunScene(const Scene& scene, const RunOptions& options) {
@@ -197,6 +217,9 @@ RunSummary RunScene(const Scene& scene, const RunOptions& options) {
   summary.output_time_s = std::chrono::duration<double>(output_time).count();
   summary.energy = writers.last_energy();
   summary.failures = result.failures;
+  if (writers.outputs() > 0)
+    summary.first_contact_times =
+        FindFirstContactTimes(options.output_dir / "probes.csv", scene.probes);
   // Final values are those of the last state written, which is always finite.
   WriteSummaryJson(options.output_dir / "summary.json", summary, scene.probes, scene.model,
                    last_written, writers.CollectContacts(last_written));
