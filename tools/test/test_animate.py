@@ -43,15 +43,6 @@ def test_frames_hold_the_net_and_the_body_axes(capture_run):
     assert lengths == pytest.approx([lengths[0]] * 3)
 
 
-@pytest.mark.parametrize("subfolder, message", [("missing", "no such folder"),
-                                                ("empty", "no run data")])
-def test_cli_refuses_a_folder_without_a_run(cli, tmp_path, subfolder, message):
-    (tmp_path / "empty").mkdir()
-    finished = cli("animate", tmp_path / subfolder)
-    assert finished.returncode == 2
-    assert message in finished.stderr
-
-
 def test_without_ffmpeg_the_default_is_a_gif_and_mp4_is_refused(cli, run_copy, tmp_path):
     no_ffmpeg = {"PATH": str(tmp_path / "empty")}  # matplotlib looks for ffmpeg on PATH
     finished = cli("animate", run_copy, "-o", tmp_path / "movie.mp4", env=no_ffmpeg)

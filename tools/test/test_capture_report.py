@@ -78,11 +78,13 @@ def test_cli_writes_png_and_pdf(cli, capture_run, tmp_path):
     assert output.stat().st_size > 0 and output.with_suffix(".pdf").stat().st_size > 0
 
 
+# Both commands that read a run folder (report, and animate) refuse one without a run.
+@pytest.mark.parametrize("command", ["report", "animate"])
 @pytest.mark.parametrize("subfolder, message", [("missing", "no such folder"),
                                                 ("empty", "no run data")])
-def test_cli_refuses_a_folder_without_a_run(cli, tmp_path, subfolder, message):
+def test_cli_refuses_a_folder_without_a_run(cli, tmp_path, command, subfolder, message):
     (tmp_path / "empty").mkdir()
-    finished = cli("report", tmp_path / subfolder)
+    finished = cli(command, tmp_path / subfolder)
     assert finished.returncode == 2
     assert message in finished.stderr
 
