@@ -15,21 +15,10 @@
 #include "ancfnet/integrators/dynamic_solver.hpp"
 #include "ancfnet/integrators/explicit_verlet.hpp"
 #include "ancfnet/io/scene_loader.hpp"
+#include "spinning_beam_cantilever.hpp"
 
 namespace ancfnet {
 namespace {
-
-constexpr const char* kSpinningCantilever = R"(gravity: [0, 0, -9.81]
-materials:
-  steel: {youngs_modulus: 2.0e11, density: 7800, poisson_ratio: 0.3}
-sections:
-  bar: {shape: rectangle, width: 0.02, height: 0.01}
-cables:
-  - {name: bar, element: ancf_beam, orientation: [0, 0, 1], start: [0, 0, 0], end: [1, 0, 0],
-     elements: 8, material: steel, section: bar, initial_velocity: {angular: [20, 0, 0]}}
-constraints:
-  - {type: clamp, at: bar.start}
-)";
 
 struct BeamRun {
   Vector3d tip = Vector3d::Zero();
@@ -39,14 +28,8 @@ struct BeamRun {
   double max_drift = 0.0;  // max |balance(t) − balance(0)| (J)
 };
 
-// Twist of the tip about x: d₂ = e_z turns to (0, −sin φ, cos φ).
-double TipTwist(const Model& model, const State& state) {
-  const Vector3d d2 = state.q.segment<3>(model.nodes().back().section_dof);
-  return std::atan2(-d2.y(), d2.z());
-}
-
 BeamRun RunCantilever(IntegratorType integrator, double h) {
-  const Scene scene = ParseScene(kSpinningCantilever);
+  const Scene scene = ParseScene(verification::kSpinningBeamCantilever);
   const Model& model = scene.model;
   DynamicSettings settings;
   settings.integrator = integrator;
@@ -65,17 +48,17 @@ BeamRun RunCantilever(IntegratorType integrator, double h) {
         first = false;
         run.max_kinetic = std::max(run.max_kinetic, e.kinetic);
         run.max_drift = std::max(run.max_drift, std::abs(e.Balance() - balance0));
-        run.max_twist = std::max(run.max_twist, std::abs(TipTwist(model, s)));
+        run.max_twist = std::max(run.max_twist, std::abs(verification::TipTwist(model, s)));
       },
       &state);
   EXPECT_TRUE(result.completed) << result.message;
   run.tip = state.q.segment<3>(model.nodes().back().position_dof);
-  run.twist = TipTwist(model, state);
+  run.twist = verification::TipTwist(model, state);
   return run;
 }
 
 TEST(BeamExplicitVerlet, SpinningCantileverAgreesWithGeneralizedAlphaAndKeepsItsEnergy) {
-  const Model model = ParseScene(kSpinningCantilever).model;
+  const Model model = ParseScene(verification::kSpinningBeamCantilever).model;
   const double limit =
       ExplicitVerletIntegrator(model).EstimateCriticalStep(MakeInitialState(model).q);
   const double h = 2.5e-7;
