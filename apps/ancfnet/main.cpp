@@ -42,7 +42,9 @@ extern "C" void RequestStopOnSignal(int signal) {
 
 // The work limit of `run` and `check`, lifted by --force.
 ancfnet::LoadOptions WorkLimit(bool force) {
-  return {.max_unknown_steps = force ? 0.0 : ancfnet::kMaxUnknownSteps};
+  ancfnet::LoadOptions options;
+  options.max_unknown_steps = force ? 0.0 : ancfnet::kMaxUnknownSteps;
+  return options;
 }
 
 int RunCommand(const std::string& scene_file, const std::string& output_dir, bool quiet,

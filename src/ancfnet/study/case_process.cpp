@@ -105,7 +105,9 @@ pid_t StartCase(const CaseLauncher& launcher, const Study& study, std::size_t in
 std::optional<CaseResult> FinishCase(const CaseLauncher& launcher, std::size_t index,
                                      const std::vector<double>& values, int wait_status) {
   const std::filesystem::path folder = CaseFolder(launcher.study_dir, index);
-  CaseResult result{.index = index, .values = values};
+  CaseResult result;
+  result.index = index;
+  result.values = values;
   if (WIFEXITED(wait_status)) {
     const int code = WEXITSTATUS(wait_status);
     if (code == kExitInterruptedBySigint || code == kExitInterruptedBySigterm) return std::nullopt;

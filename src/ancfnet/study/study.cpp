@@ -117,10 +117,12 @@ CaseTable Study::MakeCases() const {
 std::string Study::MakeCaseScene(const std::vector<double>& values) const {
   const YAML::Node copy = YAML::Clone(scene);
   const std::string scene_name = scene_file.filename().string();
-  for (std::size_t i = 0; i < parameters.size(); ++i) {
-    YAML::Node node = parameters[i].path.Find(copy, scene_name);
-    node = fmt::format("{}", values[i]);  // the shortest text that reads back as values[i]
-  }
+  const auto set = [&](const ScenePath& path, double value) {
+    YAML::Node node = path.Find(copy, scene_name);
+    node = fmt::format("{}", value);  // the shortest text that reads back as `value`
+  };
+  for (const auto& [path, value] : fixed_values) set(path, value);
+  for (std::size_t i = 0; i < parameters.size(); ++i) set(parameters[i].path, values[i]);
   YAML::Emitter out;
   out << copy;
   return std::string(out.c_str()) + "\n";
@@ -133,7 +135,7 @@ Study ParseStudy(const std::string& yaml_text, const std::string& source_name,
   if (root_node.IsNull()) root.FailPlain("the study is empty (expected scene and parameters)");
   try {
     const YamlMap map = root.AsMap();
-    map.CheckKeys({"scene", "sampling", "cases", "seed", "parameters", "plot"});
+    map.CheckKeys({"scene", "sampling", "cases", "seed", "set", "parameters", "plot"});
     Study study;
     const YamlValue scene = map.Get("scene");
     study.scene_file = directory / scene.AsString();
@@ -160,6 +162,14 @@ Study ParseStudy(const std::string& yaml_text, const std::string& source_name,
           item.AsMap().Get("path").Fail("this scene value is already a parameter of the study");
     }
     if (!sampled) CountGridCases(study, parameters);
+    if (auto v = map.Find("set"))
+      for (const YamlMap::Entry& entry : v->AsMap().entries()) {
+        const YamlValue path = v->Child(YAML::Node(entry.key), entry.key, entry.key_mark);
+        study.fixed_values.emplace_back(ReadScenePath(path, study), entry.value.AsNumber());
+        for (const StudyParameter& parameter : study.parameters)
+          if (parameter.path.text() == entry.key)
+            entry.value.Fail("this scene value is a parameter of the study: it cannot be set");
+      }
     if (auto v = map.Find("plot")) study.plot = ReadPlot(*v, study);
     return study;
   } catch (const YAML::Exception& error) {  // a node access the reader did not foresee

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "ancfnet/study/case_sampling.hpp"
@@ -51,11 +52,13 @@ struct Study {
   std::size_t sampled_cases = 0;  ///< kRandom, kLatinHypercube
   std::uint64_t seed = 1;
   std::vector<StudyParameter> parameters;
+  /// Values set alike in every case (`set:`), e.g. a shorter end time.
+  std::vector<std::pair<ScenePath, double>> fixed_values;
   std::optional<StudyPlot> plot;
 
   /// The parameter values of every case, one row per case.
   CaseTable MakeCases() const;
-  /// The base scene with the parameters set to `values`, as YAML text.
+  /// The base scene with the fixed values and the parameters set to `values`, as YAML text.
   std::string MakeCaseScene(const std::vector<double>& values) const;
 };
 

@@ -58,18 +58,20 @@ TEST(StudyFile, GridStudyMakesEveryCaseScene) {
       "parameters:\n"
       "  - {path: 'nets[net].velocity[2]', values: [-3, -5.5]}\n"
       "  - {path: bodies[0].angular_velocity[2], values: [0, 0.1, 0.2]}\n"
-      "  - {path: contact.law.stiffness, values: [2.0e7]}\n");
+      "  - {path: contact.law.stiffness, values: [2.0e7]}\n"
+      "set: {analysis.end_time: 0.001}\n");
   const CaseTable cases = study.MakeCases();
   ASSERT_EQ(cases.size(), 6u);
   EXPECT_EQ(cases[4], (std::vector<double>{-5.5, 0.1, 2.0e7}));
   const std::string text = study.MakeCaseScene(cases[4]);
   const Scene scene = ParseScene(text, "case.yaml");
-  EXPECT_EQ(scene.model.bodies().size(), 1u);
+  EXPECT_EQ(scene.model.rigid_bodies().size(), 1u);
   const YAML::Node node = YAML::Load(text);
   EXPECT_EQ(node["nets"][0]["velocity"][2].as<double>(), -5.5);
   EXPECT_EQ(node["bodies"][0]["angular_velocity"][2].as<double>(), 0.1);
   EXPECT_EQ(node["bodies"][0]["angular_velocity"][1].as<double>(), 0.5);  // untouched
   EXPECT_EQ(node["contact"]["law"]["stiffness"].as<double>(), 2.0e7);
+  EXPECT_EQ(node["analysis"]["end_time"].as<double>(), 0.001);
   // The base scene itself is left as it was.
   EXPECT_EQ(study.scene["nets"][0]["velocity"][2].as<double>(), -4.0);
 }
@@ -123,6 +125,10 @@ TEST(StudyFile, BadStudiesAreRefusedWithLineAndKey) {
   ExpectRefused(grid + "    values: [1]\n  - {path: contact.law.stiffness, values: [2]}\n", 5,
                 "already a parameter");
   ExpectRefused(grid + "    values: [1]\ncases: 3\n", 5, "a grid study has one case per");
+  ExpectRefused(grid + "    values: [1]\nset: {contact.law.stiffness: 2}\n", 5,
+                "is a parameter of the study");
+  ExpectRefused(grid + "    values: [1]\nset: {analysis.end_tim: 2}\n", 5,
+                "no key 'end_tim' in 'analysis'; did you mean 'end_time'?");
   const std::string sampled =
       "scene: base.yaml\nsampling: random\ncases: 4\nparameters:\n"
       "  - path: contact.law.stiffness\n";
