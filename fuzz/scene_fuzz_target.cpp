@@ -21,7 +21,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     // As `ancfnet check` loads it: with the work limit of a run without --force.
     ancfnet::ParseScene(text, "<fuzz>", ANCFNET_FUZZ_SCENE_DIRECTORY,
-                        {.max_unknown_steps = ancfnet::kMaxUnknownSteps, .scene_directory = {}});
+                        {.max_unknown_steps = ancfnet::kMaxUnknownSteps});
   } catch (const ancfnet::InputError&) {
   }
   return 0;

@@ -19,6 +19,7 @@
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/common/interrupt.hpp"
 #include "ancfnet/io/scene_loader.hpp"
+#include "ancfnet/io/yaml_document.hpp"
 #include "ancfnet/run/run_scene.hpp"
 #include "assumed_modes_command.hpp"
 #include "identify_command.hpp"
@@ -42,19 +43,22 @@ extern "C" void RequestStopOnSignal(int signal) {
 
 // The work limit of `run` and `check`, lifted by --force.
 ancfnet::LoadOptions WorkLimit(bool force) {
-  ancfnet::LoadOptions options;
-  options.max_unknown_steps = force ? 0.0 : ancfnet::kMaxUnknownSteps;
-  return options;
+  return {.max_unknown_steps = force ? 0.0 : ancfnet::kMaxUnknownSteps};
 }
 
-int RunCommand(const std::string& scene_file, const std::string& output_dir, bool quiet,
-               std::optional<ancfnet::AnalysisType> type, ancfnet::LoadOptions load,
-               ancfnet::RunOptions options) {
+// `scene_directory`: where the scene's relative paths are taken from; empty: the scene file's
+// folder.
+int RunCommand(const std::string& scene_file, const std::string& scene_directory,
+               const std::string& output_dir, bool quiet, std::optional<ancfnet::AnalysisType> type,
+               bool force, ancfnet::RunOptions options) {
   std::signal(SIGINT, RequestStopOnSignal);
   std::signal(SIGTERM, RequestStopOnSignal);
   // A static solve takes no time steps: no work limit.
-  if (type.has_value()) load.max_unknown_steps = 0.0;
-  const ancfnet::Scene scene = ancfnet::LoadScene(scene_file, load);
+  const ancfnet::LoadOptions load = WorkLimit(force || type.has_value());
+  const ancfnet::Scene scene =
+      scene_directory.empty() ? ancfnet::LoadScene(scene_file, load)
+                              : ancfnet::ParseScene(ancfnet::ReadInputFile(scene_file, "scene"),
+                                                    scene_file, scene_directory, load);
   options.output_dir = output_dir.empty()
                            ? std::filesystem::path("out") / std::filesystem::path(scene_file).stem()
                            : std::filesystem::path(output_dir);
@@ -156,9 +160,7 @@ int main(int argc, char** argv) {
     for (const ancfnet::PlotCommand& plot : plot_commands)
       if (*plot.command) ancfnet::RunPlotCommand(plot);
     const auto type = *run_static ? std::optional(ancfnet::AnalysisType::kStatic) : std::nullopt;
-    ancfnet::LoadOptions load = WorkLimit(force);
-    load.scene_directory = scene_directory;
-    return RunCommand(scene_file, output_dir, quiet, type, load, run_options);
+    return RunCommand(scene_file, scene_directory, output_dir, quiet, type, force, run_options);
   } catch (const ancfnet::InputError& e) {
     fmt::print(stderr, "ancfnet: {}\n", e.what());
     return kExitInputError;

@@ -480,9 +480,7 @@ Scene ParseScene(const std::string& yaml_text, const std::string& source_name,
 }
 
 Scene LoadScene(const std::filesystem::path& file, const LoadOptions& options) {
-  const std::filesystem::path directory =
-      options.scene_directory.empty() ? file.parent_path() : options.scene_directory;
-  return ParseScene(ReadInputFile(file, "scene"), file.string(), directory, options);
+  return ParseScene(ReadInputFile(file, "scene"), file.string(), file.parent_path(), options);
 }
 
 }  // namespace ancfnet

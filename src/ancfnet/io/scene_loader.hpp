@@ -16,18 +16,15 @@ struct LoadOptions {
   /// model's coordinates), exceeds this is refused at `time_step` with the estimate and the hint
   /// `--force`; 0: no limit (the CLI's `run --force`, and every use but `run` and `check`).
   double max_unknown_steps = 0.0;
-  /// The folder relative paths in the scene (a mesh target's `file`) are taken from by
-  /// LoadScene; empty: the scene file's folder. A study's case scenes keep their base scene's.
-  std::filesystem::path scene_directory;
 };
 
 /// Estimated work above which `ancfnet run` asks for --force: 10¹² unknown-steps take about
 /// three months on one core at the 1.5·10⁵ unknown-steps per second of the S3 net drop.
 inline constexpr double kMaxUnknownSteps = 1e12;
 
-/// Reads and parses the scene file `file` (ReadInputFile: "FILE: cannot open scene file" when it
-/// cannot be read, a device, a pipe or more than 64 MiB refused before reading), and throws as
-/// ParseScene otherwise.
+/// Reads and parses the scene file `file`. Throws InputError "FILE: cannot open scene file" when
+/// it cannot be read, refuses at once (before reading) a file that is not a regular file (a
+/// device, a pipe) or holds more than 64 MiB, and throws as ParseScene otherwise.
 Scene LoadScene(const std::filesystem::path& file, const LoadOptions& options = {});
 
 /// Parses a scene from YAML text; `source_name` names it in messages and in Scene::source.

@@ -100,7 +100,7 @@ TEST(HostileInput, AnEstimatedWorkBeyondTheLimitAsksForForce) {
       Cantilever("  type: static\n", "  type: dynamic\n  time_step: 1.0e-7\n  end_time: 100\n");
   const auto error_with_limit = [&](double limit) -> std::string {
     try {
-      ParseScene(scene, "scene.yaml", {}, {.max_unknown_steps = limit, .scene_directory = {}});
+      ParseScene(scene, "scene.yaml", {}, {.max_unknown_steps = limit});
     } catch (const InputError& error) {
       return error.what();
     }
