@@ -47,6 +47,13 @@ def column(rows, name, path):
     return np.array([float(row[name]) if row[name] != "" else np.nan for row in rows])
 
 
+def padded_range(values):
+    """The range of the finite `values` widened by 8 % on each side (by 1 when they are equal)."""
+    low, high = np.nanmin(values), np.nanmax(values)
+    pad = 0.08 * (high - low) if high > low else 1.0
+    return low - pad, high + pad
+
+
 def make_figure(rows, x_name, y_name, metric_name, path):
     """The figure: the metric over (x, y), failed cases marked."""
     x = column(rows, x_name, path)
@@ -64,6 +71,8 @@ def make_figure(rows, x_name, y_name, metric_name, path):
     if (~ok).any():
         axes.scatter(x[~ok], y[~ok], marker="x", c="0.5", s=60, zorder=3, label="failed case")
         axes.legend(loc="best", fontsize="small")
+    axes.set_xlim(*padded_range(x))  # the points on the range's edges drawn whole
+    axes.set_ylim(*padded_range(y))
     figure.colorbar(points, ax=axes, label=metric_name)
     axes.set_xlabel(x_name)
     axes.set_ylabel(y_name)
