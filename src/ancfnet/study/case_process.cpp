@@ -116,6 +116,10 @@ std::optional<CaseResult> FinishCase(const CaseLauncher& launcher, std::size_t i
       result.reason = SummaryMessage(folder);
       if (result.reason.empty()) result.reason = LastMessage(folder);
       if (result.reason.empty()) result.reason = fmt::format("exit code {}", code);
+      // Paths in the message relative to DIR: the table does not depend on where DIR is.
+      const std::string prefix = (launcher.study_dir / "").string();
+      for (std::size_t at; (at = result.reason.find(prefix)) != std::string::npos;)
+        result.reason.erase(at, prefix.size());
     }
   } else {
     const int signal = WIFSIGNALED(wait_status) ? WTERMSIG(wait_status) : 0;

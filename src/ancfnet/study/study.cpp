@@ -162,14 +162,16 @@ Study ParseStudy(const std::string& yaml_text, const std::string& source_name,
           item.AsMap().Get("path").Fail("this scene value is already a parameter of the study");
     }
     if (!sampled) CountGridCases(study, parameters);
-    if (auto v = map.Find("set"))
-      for (const YamlMap::Entry& entry : v->AsMap().entries()) {
+    if (auto v = map.Find("set")) {
+      const YamlMap fixed = v->AsMap();
+      for (const YamlMap::Entry& entry : fixed.entries()) {
         const YamlValue path = v->Child(YAML::Node(entry.key), entry.key, entry.key_mark);
         study.fixed_values.emplace_back(ReadScenePath(path, study), entry.value.AsNumber());
         for (const StudyParameter& parameter : study.parameters)
           if (parameter.path.text() == entry.key)
             entry.value.Fail("this scene value is a parameter of the study: it cannot be set");
       }
+    }
     if (auto v = map.Find("plot")) study.plot = ReadPlot(*v, study);
     return study;
   } catch (const YAML::Exception& error) {  // a node access the reader did not foresee

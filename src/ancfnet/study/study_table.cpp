@@ -44,7 +44,10 @@ Metrics ReadMetrics(const std::filesystem::path& summary_file) {
   for (const char* key : {"time", "steps"})
     if (json.contains(key) && json[key].is_number())
       metrics.emplace_back(key, FormatNumber(json[key].get<double>()));
-  if (json.contains("probes")) Flatten(json["probes"], "", &metrics);
+  // {"probes": {NAME: {KIND: VALUE}}}: the columns are NAME.FIELD, as in probes.csv.
+  if (json.contains("probes") && json["probes"].is_object())
+    for (const auto& [name, probe] : json["probes"].items())
+      Flatten(probe.is_object() && probe.size() == 1 ? probe.front() : probe, name, &metrics);
   return metrics;
 }
 

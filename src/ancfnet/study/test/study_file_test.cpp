@@ -22,6 +22,7 @@ bodies:
   - name: target
     mass: 50
     inertia: [1, 1.2, 1.4]
+    position: [0, 0, 0]
     angular_velocity: [0.3, 0.5, 0.2]
 nets:
   - {name: net, type: square, side: 0.8, meshes: 2, center: [0, 0, 0.3], material: dyneema,
