@@ -34,7 +34,7 @@ rows = list(csv.DictReader(open(sys.argv[1])))
 header = list(rows[0])
 assert header[:5] == ["case", "nets[net].velocity[2]", "contact.law.stiffness", "status",
                       "reason"], header
-assert "grab.enclosed_fraction" in header and "rates.angular_velocity[2]" in header, header
+assert "grab.enclosed_fraction" in header and "rates.angular_body[2]" in header, header
 expected = [("0", "-4", "100000000", "ok"), ("1", "-4", "-1", "failed"),
             ("2", "-6", "100000000", "ok"), ("3", "-6", "-1", "failed")]
 got = [(r["case"], r["nets[net].velocity[2]"], r["contact.law.stiffness"], r["status"])
@@ -42,10 +42,10 @@ got = [(r["case"], r["nets[net].velocity[2]"], r["contact.law.stiffness"], r["st
 assert got == expected, got
 for r in rows:
     if r["status"] == "ok":
-        assert r["reason"] == "" and r["time"] == "0.004" and r["steps"] == "4", r
+        assert r["reason"] == "" and r["time"] == "0.004" and int(r["steps"]) >= 4, r
         assert 0 <= float(r["grab.enclosed_fraction"]) <= 1, r
     else:
-        assert "stiffness" in r["reason"], r
+        assert r["reason"].startswith("cases/000") and "stiffness" in r["reason"], r
         assert r["time"] == "", r
 for cell in open(sys.argv[1]).read().split(","):
     assert "nan" not in cell.lower(), cell

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <limits>
+#include <system_error>
 #include <utility>
 
 #include "ancfnet/common/error.hpp"
@@ -139,6 +140,8 @@ Study ParseStudy(const std::string& yaml_text, const std::string& source_name,
     Study study;
     const YamlValue scene = map.Get("scene");
     study.scene_file = directory / scene.AsString();
+    if (std::error_code error; !std::filesystem::is_regular_file(study.scene_file, error))
+      scene.Fail(fmt::format("cannot open the base scene {}", study.scene_file.string()));
     LoadScene(study.scene_file);
     study.scene = ParseYamlDocument(ReadInputFile(study.scene_file, "scene"),
                                     study.scene_file.string(), "scene");

@@ -58,7 +58,7 @@ TEST(StudyFile, GridStudyMakesEveryCaseScene) {
       "scene: base.yaml\n"
       "parameters:\n"
       "  - {path: 'nets[net].velocity[2]', values: [-3, -5.5]}\n"
-      "  - {path: bodies[0].angular_velocity[2], values: [0, 0.1, 0.2]}\n"
+      "  - {path: 'bodies[0].angular_velocity[2]', values: [0, 0.1, 0.2]}\n"
       "  - {path: contact.law.stiffness, values: [2.0e7]}\n"
       "set: {analysis.end_time: 0.001}\n");
   const CaseTable cases = study.MakeCases();
@@ -84,7 +84,7 @@ TEST(StudyFile, SampledValuesFollowTheirDistributions) {
       "cases: 400\n"
       "seed: 5\n"
       "parameters:\n"
-      "  - {path: nets[0].velocity[2], uniform: [-6, -2]}\n"
+      "  - {path: 'nets[0].velocity[2]', uniform: [-6, -2]}\n"
       "  - {path: contact.law.restitution, normal: {mean: 0.3, std: 0.01}}\n");
   const CaseTable cases = study.MakeCases();
   ASSERT_EQ(cases.size(), 400u);
@@ -119,7 +119,7 @@ TEST(StudyFile, PathsTheBaseSceneLacksAreRefused) {
 TEST(StudyFile, BadStudiesAreRefusedWithLineAndKey) {
   ExpectRefused("scene: base.yaml\nparameter: []\n", 2, "key 'parameter'");
   ExpectRefused("scene: base.yaml\nparameters: []\n", 2, "parameters");
-  ExpectRefused("scene: missing.yaml\nparameters: []\n", 1, "cannot open scene file");
+  ExpectRefused("scene: missing.yaml\nparameters: []\n", 1, "cannot open the base scene");
   const std::string grid = "scene: base.yaml\nparameters:\n  - path: contact.law.stiffness\n";
   ExpectRefused(grid + "    uniform: [1, 2]\n", 4, "a grid study lists each parameter's");
   ExpectRefused(grid + "    values: []\n", 4, "values");
@@ -149,7 +149,7 @@ TEST(StudyFile, BadStudiesAreRefusedWithLineAndKey) {
       1, "missing required key 'cases'");
   ExpectRefused("scene: base.yaml\nsampling: sobol\n", 2, "key 'sampling'");
   ExpectRefused(grid +
-                    "    values: [1]\nplot: {x: contact.law.stiffness, y: gravity[0], "
+                    "    values: [1]\nplot: {x: contact.law.stiffness, y: 'gravity[0]', "
                     "metric: m}\n",
                 5, "key 'y'");
 }
