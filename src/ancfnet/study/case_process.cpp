@@ -2,7 +2,7 @@
 
 #include <fcntl.h>
 #include <fmt/format.h>
-#include <spawn.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -17,8 +17,6 @@
 
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/common/interrupt.hpp"
-
-extern char** environ;
 
 namespace ancfnet {
 namespace {
@@ -79,26 +77,33 @@ pid_t StartCase(const CaseLauncher& launcher, const Study& study, std::size_t in
   std::vector<char*> argv;
   for (std::string& word : words) argv.push_back(word.data());
   argv.push_back(nullptr);
-  const std::string messages = (folder / "stderr.txt").string();
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, messages.c_str(),
-                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  // A process group of its own: a Ctrl-C at the terminal reaches the study alone, which passes
-  // it on once (a second SIGINT would end the run without its outputs).
-  posix_spawnattr_t attributes;
-  posix_spawnattr_init(&attributes);
-  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
-  posix_spawnattr_setpgroup(&attributes, 0);
-  pid_t pid = 0;
-  const int failed = posix_spawn(&pid, argv[0], &actions, &attributes, argv.data(), environ);
-  posix_spawnattr_destroy(&attributes);
-  posix_spawn_file_actions_destroy(&actions);
-  if (failed != 0)
+  // Opened before fork: between fork and exec the child makes only async-signal-safe calls.
+  const int input = open("/dev/null", O_RDONLY | O_CLOEXEC);
+  const int output = open("/dev/null", O_WRONLY | O_CLOEXEC);
+  const int messages =
+      open((folder / "stderr.txt").c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  const pid_t parent = getpid();
+  const pid_t pid = input < 0 || output < 0 || messages < 0 ? -1 : fork();
+  if (pid == 0) {
+    // A process group of its own: a Ctrl-C at the terminal reaches the study alone, which
+    // passes it on once (a second SIGINT would end the run without its outputs). SIGTERM when
+    // the study dies (killed), so that no orphaned case writes into a folder a resumed study
+    // runs again.
+    setpgid(0, 0);
+    prctl(PR_SET_PDEATHSIG, SIGTERM);
+    if (getppid() != parent) _exit(kExitInterruptedBySigterm);
+    dup2(input, STDIN_FILENO);
+    dup2(output, STDOUT_FILENO);
+    dup2(messages, STDERR_FILENO);
+    execv(argv[0], argv.data());
+    _exit(127);
+  }
+  const int error_number = errno;
+  for (const int descriptor : {input, output, messages})
+    if (descriptor >= 0) close(descriptor);
+  if (pid < 0)
     throw InputError(fmt::format("cannot start {} for case {}: {}", launcher.executable.string(),
-                                 index, std::strerror(failed)));
+                                 index, std::strerror(error_number)));
   return pid;
 }
 

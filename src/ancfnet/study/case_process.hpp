@@ -25,8 +25,10 @@ struct CaseLauncher {
 
 /// Empties the case's folder (what an interrupted attempt left), writes its scene.yaml and
 /// starts `EXECUTABLE run scene.yaml -o FOLDER -q --scene-dir BASE_SCENE_FOLDER` with stdout
-/// discarded and stderr in stderr.txt. Returns the child's process id. Throws InputError when
-/// the folder cannot be written or the process cannot be started.
+/// discarded and stderr in stderr.txt, in a process group of its own, and stopped by SIGTERM if
+/// the study dies. Returns the child's process id. Throws InputError when the folder cannot be
+/// written or the process cannot be started (an executable that cannot be run ends the case
+/// with exit code 127).
 pid_t StartCase(const CaseLauncher& launcher, const Study& study, std::size_t index,
                 const std::vector<double>& values);
 
