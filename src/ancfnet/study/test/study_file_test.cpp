@@ -2,6 +2,7 @@
 // and key.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <fstream>
 #include <string>
 
@@ -152,6 +153,20 @@ TEST(StudyFile, BadStudiesAreRefusedWithLineAndKey) {
                     "    values: [1]\nplot: {x: contact.law.stiffness, y: 'gravity[0]', "
                     "metric: m}\n",
                 5, "key 'y'");
+}
+
+TEST(StudyFile, ExampleStudiesLoad) {
+  const char* root = std::getenv("ANCFNET_SOURCE_DIR");
+  const std::filesystem::path examples = std::filesystem::path(root ? root : ".") / "examples";
+  int studies = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(examples)) {
+    if (!entry.path().filename().string().starts_with("study_")) continue;
+    SCOPED_TRACE(entry.path().string());
+    const Study study = LoadStudy(entry.path());
+    EXPECT_FALSE(study.MakeCases().empty());
+    ++studies;
+  }
+  EXPECT_GE(studies, 1);
 }
 
 }  // namespace
