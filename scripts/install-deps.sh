@@ -6,7 +6,8 @@ set -euo pipefail
 packages=(build-essential cmake libeigen3-dev libyaml-cpp-dev libcli11-dev libfmt-dev
           nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev libsuitesparse-dev
           libspectra-dev libassimp-dev python3 python3-numpy python3-matplotlib python3-pil python3-yaml
-          python3-dev python3-pytest pybind11-dev python3-pip python3-setuptools python3-wheel)
+          python3-dev python3-pytest pybind11-dev python3-pip python3-setuptools python3-wheel
+          libboost-dev libopenmpi-dev openmpi-bin)
 for arg in "$@"; do
   case "$arg" in
     --bench) packages+=(hyperfine time) ;;

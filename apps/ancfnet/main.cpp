@@ -1,5 +1,6 @@
 // The ancfnet command-line tool: run, static, check and modal for a scene file; identify
-// modes in a probes.csv file; animate and report a run's outputs.
+// modes in a probes.csv file; animate and report a run's outputs; study a scene with values
+// varied.
 // Exit codes: 0 success, 2 invalid input (one line on stderr; also a model too large for the
 // memory), 3 the solver gave up (outputs written so far are kept and summary.json says why),
 // 130 / 143 a run stopped by SIGINT / SIGTERM after the step in progress (outputs consistent,
@@ -18,12 +19,14 @@
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/common/interrupt.hpp"
 #include "ancfnet/io/scene_loader.hpp"
+#include "ancfnet/io/yaml_document.hpp"
 #include "ancfnet/run/run_scene.hpp"
 #include "assumed_modes_command.hpp"
 #include "identify_command.hpp"
 #include "modal_command.hpp"
 #include "plot_commands.hpp"
 #include "scene_report.hpp"
+#include "study_command.hpp"
 
 namespace {
 
@@ -43,12 +46,19 @@ ancfnet::LoadOptions WorkLimit(bool force) {
   return {.max_unknown_steps = force ? 0.0 : ancfnet::kMaxUnknownSteps};
 }
 
-int RunCommand(const std::string& scene_file, const std::string& output_dir, bool quiet,
-               std::optional<ancfnet::AnalysisType> type, bool force, ancfnet::RunOptions options) {
+// `scene_directory`: where the scene's relative paths are taken from; empty: the scene file's
+// folder.
+int RunCommand(const std::string& scene_file, const std::string& scene_directory,
+               const std::string& output_dir, bool quiet, std::optional<ancfnet::AnalysisType> type,
+               bool force, ancfnet::RunOptions options) {
   std::signal(SIGINT, RequestStopOnSignal);
   std::signal(SIGTERM, RequestStopOnSignal);
   // A static solve takes no time steps: no work limit.
-  const ancfnet::Scene scene = ancfnet::LoadScene(scene_file, WorkLimit(force || type.has_value()));
+  const ancfnet::LoadOptions load = WorkLimit(force || type.has_value());
+  const ancfnet::Scene scene =
+      scene_directory.empty() ? ancfnet::LoadScene(scene_file, load)
+                              : ancfnet::ParseScene(ancfnet::ReadInputFile(scene_file, "scene"),
+                                                    scene_file, scene_directory, load);
   options.output_dir = output_dir.empty()
                            ? std::filesystem::path("out") / std::filesystem::path(scene_file).stem()
                            : std::filesystem::path(output_dir);
@@ -115,6 +125,11 @@ int main(int argc, char** argv) {
   run->add_option("--restart", run_options.restart,
                   "Continue from a checkpoint of this scene, appending to the outputs in OUTPUT")
       ->type_name("CHECKPOINT");
+  // Hidden: the case scenes of a study take their relative paths from the base scene's folder.
+  std::string scene_directory;
+  run->add_option("--scene-dir", scene_directory,
+                  "Take the scene's relative paths from this folder, not the scene file's")
+      ->group("");
   CLI::App* check = app.add_subcommand("check", "Validate a scene file and describe the model");
   check->add_option("scene", scene_file, "Scene file (YAML)")->required();
   ancfnet::ModalCommand modal;
@@ -124,6 +139,8 @@ int main(int argc, char** argv) {
   ancfnet::AssumedModesArguments assumed_modes;
   ancfnet::AddAssumedModesCommand(app, &assumed_modes);
   const std::vector<ancfnet::PlotCommand> plot_commands = ancfnet::AddPlotCommands(app);
+  ancfnet::StudyArguments study;
+  ancfnet::AddStudyCommand(app, &study);
 
   try {
     app.parse(argc, argv);
@@ -139,10 +156,11 @@ int main(int argc, char** argv) {
     if (*modal.command) return ancfnet::RunModalCommand(modal);
     if (*identify) return ancfnet::RunIdentifyCommand(identify_arguments, stdout);
     if (*assumed_modes.command) return ancfnet::RunAssumedModesCommand(assumed_modes);
+    if (*study.command) return ancfnet::RunStudyCommand(study);
     for (const ancfnet::PlotCommand& plot : plot_commands)
       if (*plot.command) ancfnet::RunPlotCommand(plot);
     const auto type = *run_static ? std::optional(ancfnet::AnalysisType::kStatic) : std::nullopt;
-    return RunCommand(scene_file, output_dir, quiet, type, force, run_options);
+    return RunCommand(scene_file, scene_directory, output_dir, quiet, type, force, run_options);
   } catch (const ancfnet::InputError& e) {
     fmt::print(stderr, "ancfnet: {}\n", e.what());
     return kExitInputError;

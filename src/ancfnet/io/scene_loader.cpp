@@ -4,11 +4,8 @@
 #include <yaml-cpp/yaml.h>
 
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <optional>
-#include <sstream>
-#include <system_error>
 #include <utility>
 #include <vector>
 
@@ -28,7 +25,7 @@
 #include "ancfnet/io/scene_settings_reader.hpp"
 #include "ancfnet/io/slender_cables.hpp"
 #include "ancfnet/io/unique_names.hpp"
-#include "ancfnet/io/yaml_hang_guard.hpp"
+#include "ancfnet/io/yaml_document.hpp"
 #include "ancfnet/io/yaml_reader.hpp"
 #include "ancfnet/model/model_builder.hpp"
 
@@ -468,49 +465,11 @@ Scene ReadScene(const YamlValue& root, const std::filesystem::path& scene_direct
   return result;
 }
 
-// yaml-cpp's message with every byte outside printable ASCII written as \xNN: it quotes the
-// offending character ("unknown escape character: X"), which in a binary file may be a line
-// break or a control character, and the error must stay one readable line.
-std::string EscapeUnprintable(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    const auto byte = static_cast<unsigned char>(c);
-    if (byte >= 0x20 && byte < 0x7f)
-      out += c;
-    else
-      out += fmt::format("\\x{:02x}", byte);
-  }
-  return out;
-}
-
-[[noreturn]] void ThrowYamlError(const std::string& source, const YAML::Exception& error) {
-  const std::string why = EscapeUnprintable(error.msg);
-  if (error.mark.is_null()) throw InputError(fmt::format("{}: invalid YAML: {}", source, why));
-  throw InputError(fmt::format("{}:{}:{}: invalid YAML: {}", source, error.mark.line + 1,
-                               error.mark.column + 1, why));
-}
-
 }  // namespace
-
-constexpr std::uintmax_t kMaxSceneFileBytes = std::uintmax_t{64} << 20;
 
 Scene ParseScene(const std::string& yaml_text, const std::string& source_name,
                  const std::filesystem::path& scene_directory, const LoadOptions& options) {
-  RefuseYamlThatHangsTheParser(yaml_text, source_name);
-  YAML::Node root;
-  try {
-    const std::vector<YAML::Node> documents = YAML::LoadAll(yaml_text);
-    if (documents.size() > 1) {
-      const YAML::Mark mark = documents[1].Mark();
-      throw InputError(fmt::format(
-          "{}:{}: a second YAML document (after '---'): a scene is one document, and the rest "
-          "would be ignored",
-          source_name, mark.is_null() ? 0 : mark.line + 1));
-    }
-    if (!documents.empty()) root = documents.front();
-  } catch (const YAML::Exception& error) {
-    ThrowYamlError(source_name, error);
-  }
+  const YAML::Node root = ParseYamlDocument(yaml_text, source_name, "scene");
   try {
     Scene scene = ReadScene(YamlValue::Root(root, source_name), scene_directory, options);
     scene.text_hash = Fnv1aHash(yaml_text.data(), yaml_text.size());
@@ -521,21 +480,7 @@ Scene ParseScene(const std::string& yaml_text, const std::string& source_name,
 }
 
 Scene LoadScene(const std::filesystem::path& file, const LoadOptions& options) {
-  std::error_code error;
-  std::ifstream in(file, std::ios::binary);
-  if (!in || std::filesystem::is_directory(file, error))
-    throw InputError(fmt::format("{}: cannot open scene file", file.string()));
-  // Refused before reading: a device or pipe (/dev/zero would be read forever) and a file too
-  // large to be a scene (meshes belong in mesh files).
-  if (!std::filesystem::is_regular_file(file, error))
-    throw InputError(fmt::format("{}: not a regular file (a scene is read from a file)", file.string()));
-  if (const std::uintmax_t size = std::filesystem::file_size(file, error);
-      !error && size > kMaxSceneFileBytes)
-    throw InputError(fmt::format("{}: {} bytes; a scene file may hold at most {} MiB", file.string(),
-                                 size, kMaxSceneFileBytes >> 20));
-  std::ostringstream text;
-  text << in.rdbuf();
-  return ParseScene(text.str(), file.string(), file.parent_path(), options);
+  return ParseScene(ReadInputFile(file, "scene"), file.string(), file.parent_path(), options);
 }
 
 }  // namespace ancfnet
