@@ -10,6 +10,8 @@
 #include "ancfnet/model/builder_checks.hpp"
 #include "ancfnet/model/material.hpp"
 #include "ancfnet/model/model_builder.hpp"
+#include "ancfnet/model/net_builder.hpp"
+#include "ancfnet/model/net_topology.hpp"
 #include "bindings.hpp"
 
 namespace py = pybind11;
@@ -62,6 +64,23 @@ Index AddRigidBody(ModelBuilder& builder, const std::string& name, double mass,
                                .position = position,
                                .velocity = velocity,
                                .angular_velocity = angular_velocity});
+}
+
+// A square net as a scene file's `nets` item of type square makes it, ideal knots.
+void AddSquareNet(ModelBuilder& builder, const std::string& name, double side, int meshes,
+                  const Vector3d& center, const Material& material, const Section& section,
+                  bool tension_only, int elements_per_thread, double knot_mass,
+                  const Vector3d& velocity) {
+  NetSpec spec;
+  spec.name = name;
+  spec.topology = MakeGridNet(
+      {.side_u = side, .side_v = side, .meshes_u = meshes, .meshes_v = meshes, .center = center});
+  spec.thread = MakeRopeProperties(material, section);
+  spec.thread.tension_only = tension_only;
+  spec.elements_per_thread = elements_per_thread;
+  spec.knot_mass = knot_mass;
+  spec.velocity = velocity;
+  AddNet(builder, spec);
 }
 
 // The scene of the builder's model with `settings` (a dict of the scene file's `analysis`,

@@ -127,6 +127,47 @@ def test_built_masses_and_bodies_step_as_their_scene_file(tmp_path):
     assert output_files(tmp_path / "built") == output_files(tmp_path / "yaml")
 
 
+NET = """
+gravity: [0, 0, -9.81]
+materials:
+  thread: {youngs_modulus: 1.0e9, density: 1000, axial_damping_time: 1.0e-4}
+sections:
+  thread: {shape: circle, diameter: 0.002}
+nets:
+  - {name: net, type: square, side: 1.0, meshes: 4, center: [0, 0, 1], material: thread,
+     section: thread, elements_per_thread: 2, knot_mass: 0.01, velocity: [0.5, 0, 2]}
+constraints:
+  - {type: pin, at: net.t0.start}
+probes:
+  - {name: mouth, quantity: mouth_area, net: net}
+  - {name: middle, quantity: centroid, net: net}
+analysis: {type: dynamic, time_step: 1.0e-3, end_time: 0.02}
+output: {interval: 0.005}
+"""
+
+
+def test_a_built_net_runs_as_its_scene_file_bit_for_bit(tmp_path):
+    """A square net thrown up and pinned at a corner."""
+    builder = ancfnet.ModelBuilder()
+    builder.set_gravity([0, 0, -9.81])
+    builder.add_square_net("net", 1.0, 4, [0, 0, 1], ancfnet.Material(1.0e9, 1000, 1.0e-4),
+                           ancfnet.Section.circle(0.002), elements_per_thread=2,
+                           knot_mass=0.01, velocity=[0.5, 0, 2])
+    builder.add_pin("net.t0", 0.0)
+    scene = builder.build_scene({
+        "probes": [{"name": "mouth", "quantity": "mouth_area", "net": "net"},
+                   {"name": "middle", "quantity": "centroid", "net": "net"}],
+        "analysis": {"type": "dynamic", "time_step": 1.0e-3, "end_time": 0.02},
+        "output": {"interval": 0.005}})
+
+    built = ancfnet.run(scene, tmp_path / "built")
+    from_file = ancfnet.run(ancfnet.parse_scene(NET), tmp_path / "yaml")
+
+    assert built["status"] == "completed"
+    assert output_files(tmp_path / "built") == output_files(tmp_path / "yaml")
+    assert built["probes"] == from_file["probes"]
+
+
 def test_bad_input_raises_the_builders_message():
     builder = ancfnet.ModelBuilder()
     with pytest.raises(ancfnet.InputError, match=r"^youngs_modulus must be > 0 \(got -1"):
@@ -144,6 +185,8 @@ def test_bad_input_raises_the_builders_message():
         builder.add_cable("rod", [0, 0, 0], [1, 0, 0], 2, steel, rod)
     with pytest.raises(ancfnet.InputError, match="body mass must be > 0"):
         builder.add_rigid_body("box", -3.0, [1, 1, 1], [0, 0, 0])
+    with pytest.raises(ancfnet.InputError, match=r"at least 1 mesh per side \(got 0 × 0\)"):
+        builder.add_square_net("net", 1.0, 0, [0, 0, 0], steel, rod)
 
 
 def test_bad_settings_raise_the_scene_files_message():

@@ -142,6 +142,30 @@ TEST(CaptureProbe, NetDroppedOnABallFirstTouchesItWithinAStepOfFreeFall) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(CaptureProbe, ARunContinuedFromACheckpointKeepsTheFirstContactTime) {
+  // Checkpoints every 0.1 s: the one at t = 0.1 s comes after the first contact (0.0895 s);
+  // continued from it, the run keeps the time found before it.
+  const Scene scene = ParseScene(Replace(kScene, "interval: 0.01", "interval: 0.05"), "scene.yaml");
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() /
+      ("ancfnet_capture_" +
+       std::string(testing::UnitTest::GetInstance()->current_test_info()->name()));
+  std::filesystem::remove_all(dir);
+  RunOptions options;
+  options.output_dir = dir;
+  options.show_progress = false;
+  options.checkpoint_every = 0.1;
+  const RunSummary whole = RunScene(scene, options);
+  ASSERT_TRUE(whole.completed) << whole.message;
+  ASSERT_LT(whole.first_contact_times.at("grab"), 0.1);
+  options.restart = dir / "checkpoint.bin";
+  options.checkpoint_every = 0.0;
+  const RunSummary continued = RunScene(scene, options);
+  ASSERT_TRUE(continued.completed) << continued.message;
+  EXPECT_EQ(continued.first_contact_times, whole.first_contact_times);
+  std::filesystem::remove_all(dir);
+}
+
 // Two 1 kg knots hanging in a vertical line under a fixed chaser: the tether (1 m, 4 elements)
 // from the chaser at the origin to knot 0, a thread (1 m) from knot 0 to knot 1, both of
 // ρA = 1000 π (0.001)² kg/m, compliant knots, damped axially; a ball far to the side for the
