@@ -7,17 +7,18 @@
 namespace ancfnet {
 
 FirstContactTracker::FirstContactTracker(const Model& model, const std::vector<Probe>& probes)
-    : model_(model), contact_(model) {
+    : model_(model) {
   for (const Probe& probe : probes)
     if (probe.quantity == ProbeQuantity::kCapture)
       watched_.push_back({.name = probe.name, .net = probe.net, .target = probe.target});
+  if (!watched_.empty()) contact_.emplace(model);
 }
 
 void FirstContactTracker::Observe(const State& state) {
   if (found_ == static_cast<int>(watched_.size())) return;
   contacts_.clear();
-  contact_.SetBodyRotations(&state.body_rotation);
-  contact_.CollectContacts(state.q, state.v, state.contact_history, &contacts_);
+  contact_->SetBodyRotations(&state.body_rotation);
+  contact_->CollectContacts(state.q, state.v, state.contact_history, &contacts_);
   for (Watched& w : watched_) {
     if (std::isfinite(w.time) ||
         !CalcContactCoverage(model_, model_.nets()[w.net], w.target, contacts_).in_contact)

@@ -4,6 +4,7 @@
 
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,7 +43,7 @@ class FirstContactTracker {
     double time = std::numeric_limits<double>::infinity();  // t_c; infinite: not yet
   };
   const Model& model_;
-  TargetContact contact_;
+  std::optional<TargetContact> contact_;  // only with capture probes
   std::vector<Watched> watched_;
   int found_ = 0;                       // probes that have touched
   std::vector<ContactPoint> contacts_;  // reused between calls
