@@ -138,6 +138,16 @@ void BindBuilder(py::module_& m) {
            "its index.")
       .def("fix_point_mass", &ModelBuilder::FixPointMass, py::arg("name"),
            "Fixes the position of a point mass.")
+      .def("add_square_net", &AddSquareNet, py::arg("name"), py::arg("side"), py::arg("meshes"),
+           py::arg("center"), py::arg("material"), py::arg("section"),
+           py::arg("tension_only") = true, py::arg("elements_per_thread") = 1,
+           py::arg("knot_mass") = 0.0, py::arg("velocity") = zero,
+           "Adds a flat square net (model/net_builder.hpp, AddNet) as a scene file's `nets` item\n"
+           "of type square: `side` (m, > 0) split into `meshes` × `meshes` meshes (≥ 1) in the\n"
+           "x-y plane about `center`, its launch axis +z; ideal knots of `knot_mass` (kg, ≥ 0)\n"
+           "named NAME.k<i> (row by row), rope threads NAME.t<j> (tension_only=False: elastic\n"
+           "in compression too) of `elements_per_thread` elements (≥ 1), all moving at\n"
+           "`velocity` (m/s).")
       .def(
           "add_rigid_body", &AddRigidBody, py::arg("name"), py::arg("mass"), py::arg("inertia"),
           py::arg("position"), py::arg("velocity") = zero, py::arg("angular_velocity") = zero,

@@ -263,9 +263,14 @@ TEST(CaptureProbe, TetherBreaksAtItsBreakingForce) {
 
 TEST(CaptureProbe, RefusesABadTetherBreakingForce) {
   const std::string key = "breaking_force: 100";
-  EXPECT_EQ(ErrorOf(Replace(kHangingScene, key, "breaking_force: -5")), "");
-  EXPECT_EQ(ErrorOf(Replace(kHangingScene, key, "breaking_force: .inf")), "");
-  EXPECT_EQ(ErrorOf(Replace(kHangingScene, "knot_model: compliant", "knot_model: ideal")), "");
+  EXPECT_EQ(ErrorOf(Replace(kHangingScene, key, "breaking_force: -5")),
+            "scene.yaml:20:30: expected a number > 0, got '-5' (key 'breaking_force')");
+  EXPECT_EQ(ErrorOf(Replace(kHangingScene, key, "breaking_force: .inf")),
+            "scene.yaml:20:30: expected a finite number, got '.inf' (key 'breaking_force')");
+  EXPECT_EQ(ErrorOf(Replace(kHangingScene, "knot_model: compliant", "knot_model: ideal")),
+            "scene.yaml:20:30: a tether can only fail when attached at the net's centre (attach: "
+            "center) with compliant knots: it then comes off the knot's link (an ideal knot or a "
+            "bridle apex shares its position) (key 'breaking_force')");
 }
 
 }  // namespace
