@@ -208,6 +208,7 @@ TEST(CaptureProbe, SafetyFactorOfATetherHoldingAHangingNetAtRest) {
   // At rest the tether's top carries the weight below it, T = g (2 m_k + ρA (L_thread +
   // L_tether)) = 19.68 N (of which the lines' own weight is 0.3 %), the thread's top that of
   // knot 1 and the thread, g (m_k + ρA L_thread). The safety factors are 100 N and 80 N over them.
+  // Measured: 19.681638 N and 9.840819 N, 1e-8 from these after 1.5 s of damping.
   const Scene scene = ParseScene(kHangingScene, "scene.yaml");
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() /
@@ -227,13 +228,13 @@ TEST(CaptureProbe, SafetyFactorOfATetherHoldingAHangingNetAtRest) {
   const nlohmann::json json = nlohmann::json::parse(file);
   const nlohmann::json& capture = json["probes"]["grab"]["capture"];
   const nlohmann::json& tether = capture["tether"];
-  EXPECT_NEAR(tether["tension"].get<double>(), tether_tension, 1e-3 * tether_tension);
+  EXPECT_NEAR(tether["tension"].get<double>(), tether_tension, 1e-6 * tether_tension);
   EXPECT_EQ(tether["breaking_force"].get<double>(), 100.0);
   EXPECT_NEAR(tether["safety_factor"].get<double>(), 100.0 / tether_tension,
-              1e-3 * 100.0 / tether_tension);
-  EXPECT_NEAR(capture["thread_tension"].get<double>(), thread_tension, 1e-3 * thread_tension);
+              1e-6 * 100.0 / tether_tension);
+  EXPECT_NEAR(capture["thread_tension"].get<double>(), thread_tension, 1e-6 * thread_tension);
   EXPECT_NEAR(capture["thread_safety_factor"].get<double>(), 80.0 / thread_tension,
-              1e-3 * 80.0 / thread_tension);
+              1e-6 * 80.0 / thread_tension);
   // The tether is nearer to breaking: S = 5.08 against 8.08.
   EXPECT_EQ(capture["safety_factor"].get<double>(), tether["safety_factor"].get<double>());
   EXPECT_TRUE(capture["first_contact_time"].is_null());
