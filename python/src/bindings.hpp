@@ -10,6 +10,8 @@ namespace ancfnet::python {
 void BindErrors(pybind11::module_& m);
 /// ancfnet.Scene, load_scene, parse_scene.
 void BindScene(pybind11::module_& m);
+/// ancfnet.Material, Section and ModelBuilder: a scene built in code.
+void BindBuilder(pybind11::module_& m);
 /// ancfnet.run and read_probes.
 void BindRun(pybind11::module_& m);
 /// ancfnet.Simulation: a run stepped from Python.

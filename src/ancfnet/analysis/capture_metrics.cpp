@@ -45,28 +45,6 @@ TargetBall CalcTargetBall(const Model& model, const State& state, const ContactT
   return ball;
 }
 
-// The fractions of the net's knots and of its threads with a contact with `target`.
-void CalcCoverage(const Model& model, const Net& net, Index target,
-                  const std::vector<ContactPoint>& contacts, CaptureMetrics* metrics) {
-  std::set<Index> knots;
-  std::set<Index> threads;
-  for (const ContactPoint& c : contacts) {
-    if (c.target != target) continue;
-    if (c.point_mass >= 0 &&
-        std::find(net.knots.begin(), net.knots.end(), c.point_mass) != net.knots.end())
-      knots.insert(c.point_mass);
-    if (c.element < 0) continue;
-    const Index cable = model.elements()[c.element].cable;
-    if (std::find(net.threads.begin(), net.threads.end(), cable) != net.threads.end())
-      threads.insert(cable);
-  }
-  metrics->in_contact = !knots.empty() || !threads.empty();
-  if (!net.knots.empty())
-    metrics->knot_coverage = static_cast<double>(knots.size()) / net.knots.size();
-  if (!net.threads.empty())
-    metrics->thread_coverage = static_cast<double>(threads.size()) / net.threads.size();
-}
-
 void CalcTensions(const Model& model, const Net& net, const VectorXd& q, CaptureMetrics* metrics) {
   if (!net.threads.empty()) metrics->thread_tension = CalcMaxThreadTension(model, net, q).tension;
   for (Index thread : net.threads)
@@ -82,6 +60,29 @@ void CalcTensions(const Model& model, const Net& net, const VectorXd& q, Capture
 }
 
 }  // namespace
+
+ContactCoverage CalcContactCoverage(const Model& model, const Net& net, Index target,
+                                    const std::vector<ContactPoint>& contacts) {
+  std::set<Index> knots;
+  std::set<Index> threads;
+  for (const ContactPoint& c : contacts) {
+    if (c.target != target) continue;
+    if (c.point_mass >= 0 &&
+        std::find(net.knots.begin(), net.knots.end(), c.point_mass) != net.knots.end())
+      knots.insert(c.point_mass);
+    if (c.element < 0) continue;
+    const Index cable = model.elements()[c.element].cable;
+    if (std::find(net.threads.begin(), net.threads.end(), cable) != net.threads.end())
+      threads.insert(cable);
+  }
+  ContactCoverage coverage;
+  coverage.in_contact = !knots.empty() || !threads.empty();
+  if (!net.knots.empty())
+    coverage.knot_coverage = static_cast<double>(knots.size()) / net.knots.size();
+  if (!net.threads.empty())
+    coverage.thread_coverage = static_cast<double>(threads.size()) / net.threads.size();
+  return coverage;
+}
 
 double CalcSafetyFactor(double breaking_force, double max_tension) {
   if (!(max_tension > 0.0) || std::isinf(breaking_force))
@@ -104,7 +105,10 @@ CaptureMetrics CalcCaptureMetrics(const Model& model, const State& state, Index 
                                   double initial_mouth_area) {
   const Net& net = model.nets()[net_index];
   CaptureMetrics metrics;
-  CalcCoverage(model, net, target, contacts, &metrics);
+  const ContactCoverage coverage = CalcContactCoverage(model, net, target, contacts);
+  metrics.in_contact = coverage.in_contact;
+  metrics.knot_coverage = coverage.knot_coverage;
+  metrics.thread_coverage = coverage.thread_coverage;
   CalcTensions(model, net, state.q, &metrics);
   if (initial_mouth_area > 0.0)
     metrics.mouth_area_ratio = CalcNetMouthArea(model, net, state.q) / initial_mouth_area;

@@ -34,6 +34,19 @@ struct CaptureMetrics {
   bool escaped = false;
 };
 
+/// How much of a net touches a contact target: whether any of it does, and the fractions of its
+/// knots and of its threads with a contact record with the target (self-contacts do not count).
+struct ContactCoverage {
+  bool in_contact = false;
+  double knot_coverage = 0.0;    ///< knots touching the target / knots
+  double thread_coverage = 0.0;  ///< threads touching the target / threads
+};
+
+/// The contact coverage of net `net` on contact target `target`, from the active contacts
+/// `contacts` (TargetContact::CollectContacts); each knot and thread counts once.
+ContactCoverage CalcContactCoverage(const Model& model, const Net& net, Index target,
+                                    const std::vector<ContactPoint>& contacts);
+
 /// Safety factor S = T_break / T_max against breaking (Botta, Sharf & Misra 2017 compare the
 /// peak tether tension with the breaking strength): infinite when T_max ≤ 0 or T_break is
 /// infinite.

@@ -47,7 +47,7 @@ struct LoopPosition {
 template <class Integrator>
 SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings, double output_interval,
                         const OutputCallback& output, const TimeLoopCheckpoints& checkpoints,
-                        Integrator& integrator, State* state) {
+                        const StepCallback& step, Integrator& integrator, State* state) {
   SolveResult result;
   LoopPosition at;
   ArchiveReader* resume = checkpoints.resume;
@@ -142,6 +142,7 @@ SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings, dou
         energy.Release(model, integrator.workspace(), check.released_energy);
       }
     }
+    if (step) step(*state);
     const double cut = energy_control.Cut(h, energy.account());
     if (cut < 1.0) {
       // A power-of-two fraction of the nominal step, so that the step (and with it the
@@ -181,7 +182,7 @@ SolveResult RunTimeLoop(const Model& model, const DynamicSettings& settings, dou
 
 SolveResult SolveDynamic(const Model& model, const DynamicSettings& settings,
                          double output_interval, const OutputCallback& output, State* state,
-                         const TimeLoopCheckpoints& checkpoints) {
+                         const TimeLoopCheckpoints& checkpoints, const StepCallback& step) {
   if (model.num_constraint_equations() > 0 &&
       settings.integrator != IntegratorType::kGeneralizedAlpha)
     throw InputError(fmt::format(
@@ -192,17 +193,20 @@ SolveResult SolveDynamic(const Model& model, const DynamicSettings& settings,
   switch (settings.integrator) {
     case IntegratorType::kExplicitVerlet: {
       ExplicitVerletIntegrator integrator(model);
-      return RunTimeLoop(model, settings, output_interval, output, checkpoints, integrator, state);
+      return RunTimeLoop(model, settings, output_interval, output, checkpoints, step, integrator,
+                         state);
     }
     case IntegratorType::kImplicitMidpoint: {
       ImplicitMidpointIntegrator integrator(model, settings);
-      return RunTimeLoop(model, settings, output_interval, output, checkpoints, integrator, state);
+      return RunTimeLoop(model, settings, output_interval, output, checkpoints, step, integrator,
+                         state);
     }
     case IntegratorType::kGeneralizedAlpha:
       break;
   }
   GeneralizedAlphaIntegrator integrator(model, settings);
-  return RunTimeLoop(model, settings, output_interval, output, checkpoints, integrator, state);
+  return RunTimeLoop(model, settings, output_interval, output, checkpoints, step, integrator,
+                     state);
 }
 
 }  // namespace ancfnet

@@ -31,15 +31,21 @@ struct TimeLoopCheckpoints {
   ArchiveReader* resume = nullptr;
 };
 
+/// Called with the state after each accepted step, once its failures are applied and before its
+/// output (metrics that must not wait for the output times: the first contact of a capture).
+using StepCallback = std::function<void(const State& state)>;
+
 /// Integrates from state->t to settings.end_time. A rejected step is retried with half the
 /// step, down to min_time_step (then the run stops cleanly: the result says when and why); after
 /// four accepted steps in a row a reduced step doubles back towards time_step. Steps are
 /// shortened to land on the output times, multiples of `output_interval` (0: every step).
-/// `output` is called at the start and at each output time. Never throws for a failed solve;
+/// `output` is called at the start and at each output time, `step` (when set) after every
+/// accepted step. Never throws for a failed solve;
 /// throws InputError when `checkpoints.resume` does not fit the model or a checkpoint cannot be
 /// written.
 SolveResult SolveDynamic(const Model& model, const DynamicSettings& settings,
                          double output_interval, const OutputCallback& output, State* state,
-                         const TimeLoopCheckpoints& checkpoints = {});
+                         const TimeLoopCheckpoints& checkpoints = {},
+                         const StepCallback& step = nullptr);
 
 }  // namespace ancfnet

@@ -16,7 +16,7 @@
 namespace ancfnet {
 
 /// The version of the layout and of the payload this build writes and reads.
-inline constexpr std::uint32_t kCheckpointVersion = 1;
+inline constexpr std::uint32_t kCheckpointVersion = 2;
 
 /// Writes `payload` as the checkpoint of `scene` to `path` atomically: to `path`.tmp in the same
 /// directory, flushed to the disk, then renamed over `path`, so that `path` is always either

@@ -163,12 +163,13 @@ void ReadBullets(const YamlValue& value, NetSpec* spec) {
 }
 
 // tether: {chaser, velocity, attach: center | bridle, material, section, elements, natural_length,
-// bridle_length, bridle_elements, tension_only, rope_smoothing_strain, bending}.
-TetherSpec ReadTether(const YamlValue& value, const Library& library) {
+// bridle_length, bridle_elements, tension_only, rope_smoothing_strain, bending, breaking_force},
+// of a net with `knot_model` knots.
+TetherSpec ReadTether(const YamlValue& value, const Library& library, KnotModel knot_model) {
   const YamlMap map = value.AsMap();
   map.CheckKeys({"chaser", "velocity", "attach", "material", "section", "elements",
                  "natural_length", "bridle_length", "bridle_elements", "tension_only",
-                 "rope_smoothing_strain", "bending"});
+                 "rope_smoothing_strain", "bending", "breaking_force"});
   TetherSpec tether;
   tether.chaser = map.Get("chaser").AsVector3();
   if (auto v = map.Find("velocity")) tether.chaser_velocity = v->AsVector3();
@@ -184,6 +185,10 @@ TetherSpec ReadTether(const YamlValue& value, const Library& library) {
     if (auto v = map.Find("bridle_elements")) tether.bridle_elements = v->AsInt(1, 1000);
   } else if (auto v = map.Find("bridle_length")) {
     v->Fail("bridle_length needs attach: bridle");
+  }
+  if (auto v = map.Find("breaking_force")) {
+    tether.breaking_force = v->AsPositive();
+    v->Locate([&] { RequireTetherCanFail(knot_model, tether.attachment); });
   }
   return tether;
 }
@@ -281,7 +286,7 @@ void ReadNet(const YamlValue& item, const Library& library, ModelBuilder* builde
   if (auto v = map.Find("bullets")) ReadBullets(*v, &spec);
   if (auto v = map.Find("thread_breaking_force")) spec.thread_breaking_force = v->AsPositive();
   if (auto v = map.Find("link_breaking_force")) spec.link_breaking_force = v->AsPositive();
-  if (auto v = map.Find("tether")) spec.tether = ReadTether(*v, library);
+  if (auto v = map.Find("tether")) spec.tether = ReadTether(*v, library, spec.knot_model);
   item.Locate([&] { AddNet(*builder, spec); });
   for (std::size_t k = 0; k < spec.topology.knots.size(); ++k)
     point_masses->push_back(KnotName(spec.name, static_cast<Index>(k)));

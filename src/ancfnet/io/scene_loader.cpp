@@ -479,6 +479,28 @@ Scene ParseScene(const std::string& yaml_text, const std::string& source_name,
   }
 }
 
+Scene ParseSceneSettings(Model model, const std::string& yaml_text,
+                         const std::string& source_name) {
+  RefuseYamlThatHangsTheParser(yaml_text, source_name);
+  try {
+    const YAML::Node root = YAML::Load(yaml_text);
+    Scene scene;
+    scene.model = std::move(model);
+    scene.source = source_name;
+    if (root.IsNull()) return scene;
+    const YamlMap map = YamlValue::Root(root, source_name).AsMap();
+    map.CheckKeys({"analysis", "output", "probes"});
+    if (auto v = map.Find("analysis")) scene.analysis = ReadAnalysisSettings(*v);
+    std::vector<std::string> point_masses;
+    for (const PointMass& mass : scene.model.point_masses()) point_masses.push_back(mass.name);
+    if (auto v = map.Find("probes")) scene.probes = ReadProbes(*v, scene.model, point_masses);
+    if (auto v = map.Find("output")) scene.output = ReadOutputSettings(*v);
+    return scene;
+  } catch (const YAML::Exception& error) {
+    ThrowYamlError(source_name, error);
+  }
+}
+
 Scene LoadScene(const std::filesystem::path& file, const LoadOptions& options) {
   return ParseScene(ReadInputFile(file, "scene"), file.string(), file.parent_path(), options);
 }

@@ -37,4 +37,12 @@ Scene ParseScene(const std::string& yaml_text, const std::string& source_name = 
                  const std::filesystem::path& scene_directory = {},
                  const LoadOptions& options = {});
 
+/// A scene of a model built in code (ModelBuilder: a C++ program, the Python module) with what to
+/// run and record read from YAML text: a map with the scene file's keys `analysis`, `output` and
+/// `probes` (each optional, read as in a scene file: docs/scene-format.md), whose probes name the
+/// model's cables and point masses. `source_name` names the text in messages and in
+/// Scene::source. Throws InputError as ParseScene.
+Scene ParseSceneSettings(Model model, const std::string& yaml_text,
+                         const std::string& source_name = "<settings>");
+
 }  // namespace ancfnet

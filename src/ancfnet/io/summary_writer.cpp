@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -37,12 +38,13 @@ Json CaptureJson(const Probe& probe, const Model& model, const State& state,
   const CaptureMetrics m =
       CalcCaptureMetrics(model, state, probe.net, probe.target, contacts, probe.reference_area);
   const auto first = summary.first_contact_times.find(probe.name);
+  const double thread_safety = CalcSafetyFactor(m.thread_breaking_force, m.thread_tension);
+  const double tether_safety = CalcSafetyFactor(m.tether_breaking_force, m.tether_tension);
   Json tether = nullptr;
   if (m.has_tether)
-    tether = {
-        {"tension", Number(m.tether_tension)},
-        {"breaking_force", Number(m.tether_breaking_force)},
-        {"safety_factor", Number(CalcSafetyFactor(m.tether_breaking_force, m.tether_tension))}};
+    tether = {{"tension", Number(m.tether_tension)},
+              {"breaking_force", Number(m.tether_breaking_force)},
+              {"safety_factor", Number(tether_safety)}};
   return {{"capture",
            {{"first_contact_time",
              first == summary.first_contact_times.end() ? Json(nullptr) : Number(first->second)},
@@ -52,9 +54,9 @@ Json CaptureJson(const Probe& probe, const Model& model, const State& state,
             {"thread_coverage", Number(m.thread_coverage)},
             {"thread_tension", Number(m.thread_tension)},
             {"thread_breaking_force", Number(m.thread_breaking_force)},
-            {"thread_safety_factor",
-             Number(CalcSafetyFactor(m.thread_breaking_force, m.thread_tension))},
+            {"thread_safety_factor", Number(thread_safety)},
             {"tether", tether},
+            {"safety_factor", Number(std::min(thread_safety, tether_safety))},
             {"escaped", m.escaped}}}};
 }
 

@@ -35,8 +35,8 @@ struct RunSummary {
   double output_time_s = 0.0;          ///< part of it spent writing probes.csv and VTK frames (s)
   EnergyAccount energy;                ///< energies at the end (J)
   std::vector<FailureEvent> failures;  ///< threads and connections that broke
-  /// Capture probe name → the first output time (s) at which its net touched its target
-  /// (FindFirstContactTimes); absent: never.
+  /// Capture probe name → the first time (s), of the initial state or an accepted step, at which
+  /// its net touched its target (FirstContactTracker); absent: never.
   std::map<std::string, double> first_contact_times;
 };
 
@@ -52,9 +52,10 @@ struct RunSummary {
 /// "max_penetration"}} | {"capture": {"first_contact_time", "enclosed_fraction",
 /// "mouth_area_ratio", "knot_coverage", "thread_coverage", "thread_tension",
 /// "thread_breaking_force", "thread_safety_factor", "tether": {"tension", "breaking_force",
-/// "safety_factor"} (null without a tether), "escaped"}} | …}}`. Units as in the CSV (s, m, m/s,
-/// J, N). Non-finite numbers (an infinite breaking force or safety factor, a first contact time
-/// that never came) are written as null. Throws InputError "cannot write PATH" on failure.
+/// "safety_factor"} (null without a tether), "safety_factor" (the smaller of the two), "escaped"}}
+/// | …}}`. Units as in the CSV (s, m, m/s, J, N). Non-finite numbers (an infinite breaking force or
+/// safety factor, a first contact time that never came) are written as null. Throws InputError
+/// "cannot write PATH" on failure.
 void WriteSummaryJson(const std::filesystem::path& path, const RunSummary& summary,
                       const std::vector<Probe>& probes, const Model& model, const State& state,
                       const std::vector<ContactPoint>& contacts);

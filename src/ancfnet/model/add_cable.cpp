@@ -110,10 +110,10 @@ Index ModelBuilder::AddCable(const CableSpec& spec) {
       spec.beam ? MakeBeamCentreLineProperties(spec) : spec.properties;
   ValidateProperties(properties);
   RequireBreakingForce(spec.breaking_force, "breaking force of a cable");
-  if (std::isfinite(spec.breaking_force) && !(spec.start_knot.empty() && spec.end_knot.empty()))
+  if (std::isfinite(spec.breaking_force) && !spec.start_knot.empty() && !spec.end_knot.empty())
     throw InputError(fmt::format(
-        "cable '{}' can fail but shares a knot's position (an ideal knot), so it could never come "
-        "off: use compliant knots (links) for threads that break",
+        "cable '{}' can fail but shares the positions of knots at both ends (ideal knots), so it "
+        "could never come off: use compliant knots (links) for threads that break",
         spec.name));
   // The reference directors of a beam: d₂ from the orientation by Gram–Schmidt, d₃ = t × d₂.
   std::optional<BeamSectionFrame> frame;

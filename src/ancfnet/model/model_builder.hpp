@@ -40,7 +40,8 @@ struct CableSpec {
   std::string start_knot = {};  ///< point mass whose position the start shares ("" : none)
   std::string end_knot = {};    ///< point mass whose position the end shares ("" : none)
   /// Tension (N) at which the cable fails and the links holding it break; > 0, infinite: never.
-  /// A cable that can fail cannot share a knot's position (it would stay attached).
+  /// A cable that can fail cannot share knots' positions at both ends (it would stay attached);
+  /// it comes off where a link holds it.
   double breaking_force = std::numeric_limits<double>::infinity();
   /// Set: the cable is made of beam elements, and `properties` keep only the drawing radius
   /// (EA, EI and ρA of its centre line come from the beam; damping times and the rope law must

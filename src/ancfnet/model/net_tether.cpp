@@ -3,8 +3,10 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
 
 #include "ancfnet/common/error.hpp"
+#include "ancfnet/model/builder_checks.hpp"
 #include "ancfnet/model/net_builder.hpp"
 
 namespace ancfnet {
@@ -21,7 +23,8 @@ Index NearestKnot(const std::vector<Vector3d>& knots, const Vector3d& point) {
 void AddLineToKnot(ModelBuilder& builder, const NetSpec& net, const std::string& name,
                    const std::string& from, const Vector3d& from_position,
                    const Vector3d& knot_position, Index knot, int elements,
-                   const CableProperties& properties, double natural_length) {
+                   const CableProperties& properties, double natural_length,
+                   double breaking_force) {
   const bool ideal = net.knot_model == KnotModel::kIdeal;
   builder.AddCable({.name = name,
                     .start = from_position,
@@ -30,7 +33,8 @@ void AddLineToKnot(ModelBuilder& builder, const NetSpec& net, const std::string&
                     .properties = properties,
                     .natural_length = natural_length,
                     .start_knot = from,
-                    .end_knot = ideal ? KnotName(net.name, knot) : ""});
+                    .end_knot = ideal ? KnotName(net.name, knot) : "",
+                    .breaking_force = breaking_force});
   builder.SetInitialVelocity(name, net.velocity);
   if (!ideal)
     builder.AddSpringDamper(name + ".end", {KnotName(net.name, knot)}, {name, 1.0}, net.link_law,
@@ -47,9 +51,19 @@ void Validate(const NetSpec& net, const TetherSpec& tether) {
         fmt::format("tether natural length must be ≥ 0 (got {})", tether.natural_length));
   if (tether.attachment == TetherAttachment::kBridle && net.topology.corners.empty())
     throw InputError(fmt::format("net '{}' has no corners for a bridle", net.name));
+  RequireBreakingForce(tether.breaking_force, "breaking force of a tether");
+  if (std::isfinite(tether.breaking_force)) RequireTetherCanFail(net.knot_model, tether.attachment);
 }
 
 }  // namespace
+
+void RequireTetherCanFail(KnotModel knot_model, TetherAttachment attachment) {
+  if (knot_model != KnotModel::kCompliant || attachment != TetherAttachment::kCenter)
+    throw InputError(
+        "a tether can only fail when attached at the net's centre (attach: center) with compliant "
+        "knots: it then comes off the knot's link (an ideal knot or a bridle apex shares its "
+        "position)");
+}
 
 void AddNetTether(ModelBuilder& builder, const NetSpec& net,
                   const std::vector<Vector3d>& knot_start, const TetherSpec& tether) {
@@ -69,7 +83,7 @@ void AddNetTether(ModelBuilder& builder, const NetSpec& net,
     if ((knot_start[knot] - tether.chaser).norm() == 0.0)
       throw InputError("the chaser sits on the knot its tether holds");
     AddLineToKnot(builder, net, tether_name, chaser, tether.chaser, knot_start[knot], knot,
-                  tether.elements, tether.properties, tether.natural_length);
+                  tether.elements, tether.properties, tether.natural_length, tether.breaking_force);
     return;
   }
   // Bridle: the apex on the axis, behind the centroid, where the farthest corner is exactly one
@@ -101,7 +115,8 @@ void AddNetTether(ModelBuilder& builder, const NetSpec& net,
   for (std::size_t i = 0; i < net.topology.corners.size(); ++i) {
     const Index corner = net.topology.corners[i];
     AddLineToKnot(builder, net, fmt::format("{}{}", bridle, i), bridle, apex, knot_start[corner],
-                  corner, tether.bridle_elements, tether.properties, tether.bridle_length);
+                  corner, tether.bridle_elements, tether.properties, tether.bridle_length,
+                  std::numeric_limits<double>::infinity());
   }
 }
 

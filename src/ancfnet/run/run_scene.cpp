@@ -4,12 +4,12 @@
 
 #include <chrono>
 #include <cmath>
-#include <map>
 #include <memory>
 #include <optional>
 #include <utility>
 #include <vector>
 
+#include "ancfnet/analysis/first_contact.hpp"
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/forces/self_contact.hpp"
 #include "ancfnet/forces/target_contact.hpp"
@@ -17,7 +17,6 @@
 #include "ancfnet/io/checkpoint_file.hpp"
 #include "ancfnet/io/contact_vtk_writer.hpp"
 #include "ancfnet/io/output_directory.hpp"
-#include "ancfnet/io/probe_csv_reader.hpp"
 #include "ancfnet/io/probe_csv_writer.hpp"
 #include "ancfnet/io/vtk_writer.hpp"
 #include "ancfnet/run/progress_reporter.hpp"
@@ -138,24 +137,6 @@ void CheckCheckpointOptions(const Scene& scene, const RunOptions& options, bool 
         "--checkpoint-every {} s: must be 0 (none) or at least the time step {} s", every, step));
 }
 
-// The first time in probes.csv at which each capture probe's `contact` column is 1: read back
-// from the file so that a run continued from a checkpoint sees the rows of the first part.
-std::map<std::string, double> FindFirstContactTimes(const std::filesystem::path& csv,
-                                                    const std::vector<Probe>& probes) {
-  std::map<std::string, double> times;
-  for (const Probe& probe : probes) {
-    if (probe.quantity != ProbeQuantity::kCapture) continue;
-    const ProbeSeries series = ReadProbeCsv(csv, {probe.name + ".contact"});
-    for (Eigen::Index row = 0; row < series.time.size(); ++row) {
-      if (series.values(row, 0) > 0.5) {
-        times[probe.name] = series.time[row];
-        break;
-      }
-    }
-  }
-  return times;
-}
-
 }  // namespace
 
 RunSummary RunScene(const Scene& scene, const RunOptions& options) {
@@ -170,6 +151,10 @@ RunSummary RunScene(const Scene& scene, const RunOptions& options) {
   }
   CreateOutputDirectory(options.output_dir);
   OutputWriters writers(scene, options.output_dir, resume ? &*resume : nullptr);
+  // Observes the initial state and load steps through the outputs, and every accepted time step.
+  FirstContactTracker first_contacts(scene.model, scene.probes);
+  if (resume) first_contacts.Load(&*resume);
+  const StepCallback step = [&](const State& s) { first_contacts.Observe(s); };
   ProgressReporter progress(
       is_static ? "load factor" : "t =", is_static ? 1.0 : scene.analysis.dynamics.end_time,
       options.show_progress);
@@ -177,6 +162,7 @@ RunSummary RunScene(const Scene& scene, const RunOptions& options) {
   State state = MakeInitialState(scene.model);
   std::chrono::steady_clock::duration output_time{};
   const OutputCallback output = [&](const State& s, const EnergyAccount& energy) {
+    first_contacts.Observe(s);
     const auto start = std::chrono::steady_clock::now();
     writers.Write(s, energy);
     output_time += std::chrono::steady_clock::now() - start;
@@ -189,6 +175,7 @@ RunSummary RunScene(const Scene& scene, const RunOptions& options) {
     checkpoints.write = [&](const State&, const std::vector<std::byte>& loop) {
       ArchiveWriter out;
       writers.SaveCheckpoint(&out);
+      first_contacts.Save(&out);
       out.WriteBytes(loop.data(), loop.size());
       WriteCheckpointFile(options.output_dir / "checkpoint.bin", scene, out.bytes());
     };
@@ -198,7 +185,7 @@ RunSummary RunScene(const Scene& scene, const RunOptions& options) {
   const SolveResult result =
       is_static ? SolveStatic(scene.model, scene.analysis.statics, output, &state)
                 : SolveDynamic(scene.model, scene.analysis.dynamics, scene.output.interval, output,
-                               &state, checkpoints);
+                               &state, checkpoints, step);
   progress.Finish();
   const State& last_written = writers.last_written();
   summary.completed = result.completed;
@@ -217,9 +204,7 @@ RunSummary RunScene(const Scene& scene, const RunOptions& options) {
   summary.output_time_s = std::chrono::duration<double>(output_time).count();
   summary.energy = writers.last_energy();
   summary.failures = result.failures;
-  if (writers.outputs() > 0)
-    summary.first_contact_times =
-        FindFirstContactTimes(options.output_dir / "probes.csv", scene.probes);
+  summary.first_contact_times = first_contacts.times();
   // Final values are those of the last state written, which is always finite.
   WriteSummaryJson(options.output_dir / "summary.json", summary, scene.probes, scene.model,
                    last_written, writers.CollectContacts(last_written));
