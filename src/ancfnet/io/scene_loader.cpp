@@ -481,9 +481,8 @@ Scene ParseScene(const std::string& yaml_text, const std::string& source_name,
 
 Scene ParseSceneSettings(Model model, const std::string& yaml_text,
                          const std::string& source_name) {
-  RefuseYamlThatHangsTheParser(yaml_text, source_name);
+  const YAML::Node root = ParseYamlDocument(yaml_text, source_name, "settings");
   try {
-    const YAML::Node root = YAML::Load(yaml_text);
     Scene scene;
     scene.model = std::move(model);
     scene.source = source_name;
