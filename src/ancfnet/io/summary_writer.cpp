@@ -38,11 +38,20 @@ Json CaptureJson(const Probe& probe, const Model& model, const State& state,
   const CaptureMetrics m =
       CalcCaptureMetrics(model, state, probe.net, probe.target, contacts, probe.reference_area);
   const auto first = summary.first_contact_times.find(probe.name);
-  const double thread_safety = CalcSafetyFactor(m.thread_breaking_force, m.thread_tension);
-  const double tether_safety = CalcSafetyFactor(m.tether_breaking_force, m.tether_tension);
+  // The peaks over the run; a run that observed none (e.g. a summary written without a run)
+  // has only the tensions at `state`.
+  const auto observed = summary.peak_tensions.find(probe.name);
+  const PeakTensions peak =
+      observed == summary.peak_tensions.end()
+          ? PeakTensions{.thread = m.thread_tension, .tether = m.tether_tension}
+          : PeakTensions{.thread = std::max(observed->second.thread, m.thread_tension),
+                         .tether = std::max(observed->second.tether, m.tether_tension)};
+  const double thread_safety = CalcSafetyFactor(m.thread_breaking_force, peak.thread);
+  const double tether_safety = CalcSafetyFactor(m.tether_breaking_force, peak.tether);
   Json tether = nullptr;
   if (m.has_tether)
     tether = {{"tension", Number(m.tether_tension)},
+              {"peak_tension", Number(peak.tether)},
               {"breaking_force", Number(m.tether_breaking_force)},
               {"safety_factor", Number(tether_safety)}};
   return {{"capture",
@@ -53,6 +62,7 @@ Json CaptureJson(const Probe& probe, const Model& model, const State& state,
             {"knot_coverage", Number(m.knot_coverage)},
             {"thread_coverage", Number(m.thread_coverage)},
             {"thread_tension", Number(m.thread_tension)},
+            {"peak_thread_tension", Number(peak.thread)},
             {"thread_breaking_force", Number(m.thread_breaking_force)},
             {"thread_safety_factor", Number(thread_safety)},
             {"tether", tether},

@@ -8,6 +8,7 @@
 
 #include "ancfnet/analysis/energy.hpp"
 #include "ancfnet/analysis/failure.hpp"
+#include "ancfnet/analysis/peak_tension.hpp"
 #include "ancfnet/analysis/probe.hpp"
 #include "ancfnet/model/model.hpp"
 #include "ancfnet/state/state.hpp"
@@ -38,6 +39,9 @@ struct RunSummary {
   /// Capture probe name → the first time (s), of the initial state or an accepted step, at which
   /// its net touched its target (FirstContactTracker); absent: never.
   std::map<std::string, double> first_contact_times;
+  /// Capture probe name → the largest thread and tether tensions of its net over the run, at the
+  /// initial state and every accepted step (PeakTensionTracker); absent: the last output's.
+  std::map<std::string, PeakTensions> peak_tensions;
 };
 
 /// Writes `summary` and the final values of `probes` (EvaluateProbe on `state` with
@@ -51,8 +55,10 @@ struct RunSummary {
 /// "normal_force", "friction_force", "force": [fx, fy, fz], "moment": [mx, my, mz],
 /// "max_penetration"}} | {"capture": {"first_contact_time", "enclosed_fraction",
 /// "mouth_area_ratio", "knot_coverage", "thread_coverage", "thread_tension",
-/// "thread_breaking_force", "thread_safety_factor", "tether": {"tension", "breaking_force",
-/// "safety_factor"} (null without a tether), "safety_factor" (the smaller of the two), "escaped"}}
+/// "peak_thread_tension", "thread_breaking_force", "thread_safety_factor", "tether": {"tension",
+/// "peak_tension", "breaking_force", "safety_factor"} (null without a tether), "safety_factor"
+/// (the smaller of the two), "escaped"}}: tensions at `state` and their peaks over the run
+/// (summary.peak_tensions), the safety factors against the peaks
 /// | …}}`. Units as in the CSV (s, m, m/s, J, N). Non-finite numbers (an infinite breaking force or
 /// safety factor, a first contact time that never came) are written as null. Throws InputError
 /// "cannot write PATH" on failure.

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "ancfnet/analysis/first_contact.hpp"
+#include "ancfnet/analysis/peak_tension.hpp"
 #include "ancfnet/common/error.hpp"
 #include "ancfnet/forces/self_contact.hpp"
 #include "ancfnet/forces/target_contact.hpp"
@@ -153,8 +154,15 @@ RunSummary RunScene(const Scene& scene, const RunOptions& options) {
   OutputWriters writers(scene, options.output_dir, resume ? &*resume : nullptr);
   // Observes the initial state and load steps through the outputs, and every accepted time step.
   FirstContactTracker first_contacts(scene.model, scene.probes);
-  if (resume) first_contacts.Load(&*resume);
-  const StepCallback step = [&](const State& s) { first_contacts.Observe(s); };
+  PeakTensionTracker peak_tensions(scene.model, scene.probes);
+  if (resume) {
+    first_contacts.Load(&*resume);
+    peak_tensions.Load(&*resume);
+  }
+  const StepCallback step = [&](const State& s) {
+    first_contacts.Observe(s);
+    peak_tensions.Observe(s);
+  };
   ProgressReporter progress(
       is_static ? "load factor" : "t =", is_static ? 1.0 : scene.analysis.dynamics.end_time,
       options.show_progress);
@@ -162,7 +170,7 @@ RunSummary RunScene(const Scene& scene, const RunOptions& options) {
   State state = MakeInitialState(scene.model);
   std::chrono::steady_clock::duration output_time{};
   const OutputCallback output = [&](const State& s, const EnergyAccount& energy) {
-    first_contacts.Observe(s);
+    step(s);
     const auto start = std::chrono::steady_clock::now();
     writers.Write(s, energy);
     output_time += std::chrono::steady_clock::now() - start;
@@ -176,6 +184,7 @@ RunSummary RunScene(const Scene& scene, const RunOptions& options) {
       ArchiveWriter out;
       writers.SaveCheckpoint(&out);
       first_contacts.Save(&out);
+      peak_tensions.Save(&out);
       out.WriteBytes(loop.data(), loop.size());
       WriteCheckpointFile(options.output_dir / "checkpoint.bin", scene, out.bytes());
     };
@@ -205,6 +214,7 @@ RunSummary RunScene(const Scene& scene, const RunOptions& options) {
   summary.energy = writers.last_energy();
   summary.failures = result.failures;
   summary.first_contact_times = first_contacts.times();
+  summary.peak_tensions = peak_tensions.peaks();
   // Final values are those of the last state written, which is always finite.
   WriteSummaryJson(options.output_dir / "summary.json", summary, scene.probes, scene.model,
                    last_written, writers.CollectContacts(last_written));
