@@ -6,6 +6,7 @@
 #include <memory>
 #include <string>
 
+#include "ancfnet/io/contact_reader.hpp"
 #include "ancfnet/io/scene_loader.hpp"
 #include "ancfnet/model/builder_checks.hpp"
 #include "ancfnet/model/material.hpp"
@@ -83,12 +84,18 @@ void AddSquareNet(ModelBuilder& builder, const std::string& name, double side, i
   AddNet(builder, spec);
 }
 
+// A dict of scene-file keys as one line of JSON, which is YAML: what the scene file's readers
+// read, so that defaults and messages are theirs.
+std::string ToJson(const py::dict& keys) {
+  return py::module_::import("json").attr("dumps")(keys).cast<std::string>();
+}
+
 // The scene of the builder's model with `settings` (a dict of the scene file's `analysis`,
-// `output` and `probes`) written as JSON, which is YAML: read by the scene file's readers.
+// `output` and `probes`).
 std::shared_ptr<Scene> BuildScene(const ModelBuilder& builder, const py::dict& settings,
                                   const std::string& source_name) {
-  const std::string text = py::module_::import("json").attr("dumps")(settings).cast<std::string>();
-  return std::make_shared<Scene>(ParseSceneSettings(builder.Build(), text, source_name));
+  return std::make_shared<Scene>(
+      ParseSceneSettings(builder.Build(), ToJson(settings), source_name));
 }
 
 }  // namespace
@@ -182,6 +189,18 @@ void BindBuilder(py::module_& m) {
       .def("set_initial_velocity", &ModelBuilder::SetInitialVelocity, py::arg("cable"),
            py::arg("velocity"), py::arg("angular_velocity") = zero, py::arg("center") = zero,
            "Initial velocity of every point of a cable: v (m/s) + ω × (r − center), ω in rad/s.")
+      .def(
+          "set_contact",
+          [](ModelBuilder& b, const py::dict& contact, const std::string& directory,
+             const std::string& source_name) {
+            ReadContactText(ToJson(contact), source_name, directory, &b);
+          },
+          py::arg("contact"), py::arg("directory") = ".", py::arg("source_name") = "<contact>",
+          "The model's contact from `contact`, a dict of the scene file's `contact` section\n"
+          "(docs/scene-format.md): law, friction, targets (planes, spheres, boxes, cylinders,\n"
+          "capsules, meshes; a target on a body names a body added before), self_contact, ....\n"
+          "A mesh's relative file is taken from `directory`. Raises InputError with the scene\n"
+          "file's message (\"SOURCE_NAME:LINE:COLUMN: ... (key 'KEY')\").")
       .def(
           "build_scene", &BuildScene, py::arg("settings") = py::dict(),
           py::arg("source_name") = "<ModelBuilder>",

@@ -168,6 +168,73 @@ def test_a_built_net_runs_as_its_scene_file_bit_for_bit(tmp_path):
     assert built["probes"] == from_file["probes"]
 
 
+CAPTURE = """
+gravity: [0, 0, -9.81]
+materials:
+  thread: {youngs_modulus: 1.0e9, density: 1000, axial_damping_time: 1.0e-4}
+sections:
+  thread: {shape: circle, diameter: 0.002}
+nets:
+  - {name: net, type: square, side: 1.0, meshes: 4, center: [0, 0, 0.33], material: thread,
+     section: thread, knot_mass: 0.01, velocity: [0, 0, -1]}
+contact:
+  law: {type: carvalho_martins, stiffness: 1.0e6, restitution: 0.3}
+  friction: {type: tanh, static: 0.3, kinetic: 0.3, regularization_speed: 1.0e-2}
+  targets:
+    - {name: ball, type: sphere, center: [0, 0, 0], radius: 0.3}
+probes:
+  - {name: grab, quantity: capture, net: net, target: ball}
+  - {name: ball, quantity: contact, target: ball}
+analysis: {type: dynamic, time_step: 1.0e-3, end_time: 0.05}
+output: {interval: 0.01}
+"""
+
+
+def capture_builder():
+    builder = ancfnet.ModelBuilder()
+    builder.set_gravity([0, 0, -9.81])
+    builder.add_square_net("net", 1.0, 4, [0, 0, 0.33], ancfnet.Material(1.0e9, 1000, 1.0e-4),
+                           ancfnet.Section.circle(0.002), knot_mass=0.01, velocity=[0, 0, -1])
+    return builder
+
+
+def test_a_built_net_with_contact_runs_as_its_scene_file_bit_for_bit(tmp_path):
+    """A net thrown onto a ball, with friction and a capture probe: set_contact."""
+    builder = capture_builder()
+    builder.set_contact({
+        "law": {"type": "carvalho_martins", "stiffness": 1.0e6, "restitution": 0.3},
+        "friction": {"type": "tanh", "static": 0.3, "kinetic": 0.3,
+                     "regularization_speed": 1.0e-2},
+        "targets": [{"name": "ball", "type": "sphere", "center": [0, 0, 0], "radius": 0.3}]})
+    scene = builder.build_scene({
+        "probes": [{"name": "grab", "quantity": "capture", "net": "net", "target": "ball"},
+                   {"name": "ball", "quantity": "contact", "target": "ball"}],
+        "analysis": {"type": "dynamic", "time_step": 1.0e-3, "end_time": 0.05},
+        "output": {"interval": 0.01}})
+
+    built = ancfnet.run(scene, tmp_path / "built")
+    from_file = ancfnet.run(ancfnet.parse_scene(CAPTURE), tmp_path / "yaml")
+
+    assert built["status"] == "completed"
+    # The net reaches the ball (3 cm below it at 1 m/s) within the run.
+    assert built["probes"]["grab"]["capture"]["first_contact_time"] is not None
+    assert output_files(tmp_path / "built") == output_files(tmp_path / "yaml")
+    assert built["probes"] == from_file["probes"]
+
+
+def test_bad_contact_raises_the_scene_files_message():
+    builder = capture_builder()
+    with pytest.raises(ancfnet.InputError) as error:
+        builder.set_contact({"law": {"type": "hertz", "stiffness": 1.0e6},
+                             "targets": [{"name": "ball", "type": "sphere", "center": [0, 0, 0],
+                                          "radius": -0.3}]},
+                            source_name="contact")
+    assert str(error.value).startswith("contact:1:")
+    assert "(key 'radius')" in str(error.value)
+    with pytest.raises(ancfnet.InputError, match="missing required key 'law'"):
+        builder.set_contact({"targets": []})
+
+
 def test_bad_input_raises_the_builders_message():
     builder = ancfnet.ModelBuilder()
     with pytest.raises(ancfnet.InputError, match=r"^youngs_modulus must be > 0 \(got -1"):

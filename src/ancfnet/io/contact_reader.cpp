@@ -6,6 +6,7 @@
 
 #include "ancfnet/contact/mesh/triangle_mesh.hpp"
 #include "ancfnet/io/unique_names.hpp"
+#include "ancfnet/io/yaml_document.hpp"
 
 namespace ancfnet {
 
@@ -199,6 +200,16 @@ void ReadContact(const YamlValue& value, const std::filesystem::path& scene_dire
     for (const YamlValue& target : map.Get("targets").AsList(true))
       spec.targets.push_back(ReadTarget(target, scene_directory, &target_names));
   value.Locate([&] { builder->SetContact(spec); });
+}
+
+void ReadContactText(const std::string& yaml_text, const std::string& source_name,
+                     const std::filesystem::path& directory, ModelBuilder* builder) {
+  const YAML::Node root = ParseYamlDocument(yaml_text, source_name, "contact");
+  try {
+    ReadContact(YamlValue::Root(root, source_name), directory, builder);
+  } catch (const YAML::Exception& error) {  // a node access the reader did not foresee
+    ThrowYamlError(source_name, error);
+  }
 }
 
 }  // namespace ancfnet

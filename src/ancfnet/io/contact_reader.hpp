@@ -12,6 +12,7 @@
 ///             | {name, type: mesh, file, scale, position, rotation: {axis, angle}}]
 
 #include <filesystem>
+#include <string>
 
 #include "ancfnet/io/yaml_reader.hpp"
 #include "ancfnet/model/model_builder.hpp"
@@ -28,5 +29,11 @@ FrictionLaw ReadFriction(const YamlValue& value);
 /// `file` is taken from `scene_directory`.
 void ReadContact(const YamlValue& value, const std::filesystem::path& scene_directory,
                  ModelBuilder* builder);
+
+/// ReadContact on the one YAML document of `yaml_text` (a `contact` section's map; JSON is YAML),
+/// for a model built in code (the Python ModelBuilder): `source_name` names it in messages,
+/// "SOURCE:LINE:COLUMN: … (key 'KEY')", and a mesh's relative `file` is taken from `directory`.
+void ReadContactText(const std::string& yaml_text, const std::string& source_name,
+                     const std::filesystem::path& directory, ModelBuilder* builder);
 
 }  // namespace ancfnet
